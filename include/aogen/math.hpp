@@ -9,6 +9,15 @@
 //
 // mat4 is column-major like GLSL: m.columns[c] is column c, and m[c][r] the element
 // in column c, row r.
+//
+// Projections follow one convention everywhere in aogen: right-handed view space with
+// the camera looking down −z, clip-space y up (as in GL and WebGPU; shaders map
+// uv.y = 0.5 − 0.5·ndc.y), and depth in [0, 1] in one of three conventions:
+//   standard            near → 0, far → 1
+//   reversed            near → 1, far → 0 (better float precision far away)
+//   reversed_infinite   near → 1, depth = near / view distance, no far plane
+// They take tan(fov_y / 2) rather than an angle so that no libm call (whose last bit
+// differs between C libraries) enters bytes that tests pin.
 #pragma once
 
 #include <cmath>
@@ -54,6 +63,73 @@ inline mat4 operator*(const mat4& a, const mat4& b)
 {
     mat4 r;
     for (int c = 0; c < 4; ++c) r.columns[c] = a * b.columns[c];
+    return r;
+}
+
+enum class depth_convention { standard, reversed, reversed_infinite };
+
+// Perspective projection. `tan_half_fov_y` = tan(vertical field of view / 2).
+inline mat4 perspective(float tan_half_fov_y, float aspect, float near, float far,
+                        depth_convention depth = depth_convention::standard)
+{
+    mat4 m;
+    m[0][0] = 1.0f / (aspect * tan_half_fov_y);
+    m[1][1] = 1.0f / tan_half_fov_y;
+    m[2][3] = -1.0f; // w_clip = −z_view
+    m[3][3] = 0.0f;
+    switch (depth) { // z_clip = A·z_view + B, depth = z_clip / w_clip
+    case depth_convention::standard:
+        m[2][2] = far / (near - far), m[3][2] = near * far / (near - far);
+        break;
+    case depth_convention::reversed:
+        m[2][2] = near / (far - near), m[3][2] = near * far / (far - near);
+        break;
+    case depth_convention::reversed_infinite:
+        m[2][2] = 0.0f, m[3][2] = near;
+        break;
+    }
+    return m;
+}
+
+// Orthographic projection of the box [left, right] × [bottom, top] × [−far, −near].
+inline mat4 orthographic(float left, float right, float bottom, float top, float near, float far,
+                         depth_convention depth = depth_convention::standard)
+{
+    mat4 m;
+    m[0][0] = 2.0f / (right - left), m[3][0] = -(right + left) / (right - left);
+    m[1][1] = 2.0f / (top - bottom), m[3][1] = -(top + bottom) / (top - bottom);
+    const bool reversed = depth != depth_convention::standard; // an orthographic far plane is always finite
+    const float z_near = reversed ? 1.0f : 0.0f, z_far = reversed ? 0.0f : 1.0f;
+    m[2][2] = (z_far - z_near) / (near - far); // depth is linear in z_view
+    m[3][2] = z_near + m[2][2] * near;
+    return m;
+}
+
+// The inverse of a 4×4 matrix by cofactors, in double precision. A singular matrix
+// gives a matrix of infinities/NaNs: callers pass projections and rigid transforms.
+inline mat4 inverse(const mat4& m)
+{
+    double a[16], inv[16];
+    for (int i = 0; i < 16; ++i) a[i] = m[i / 4][i % 4];
+    inv[0] = a[5] * a[10] * a[15] - a[5] * a[11] * a[14] - a[9] * a[6] * a[15] + a[9] * a[7] * a[14] + a[13] * a[6] * a[11] - a[13] * a[7] * a[10];
+    inv[4] = -a[4] * a[10] * a[15] + a[4] * a[11] * a[14] + a[8] * a[6] * a[15] - a[8] * a[7] * a[14] - a[12] * a[6] * a[11] + a[12] * a[7] * a[10];
+    inv[8] = a[4] * a[9] * a[15] - a[4] * a[11] * a[13] - a[8] * a[5] * a[15] + a[8] * a[7] * a[13] + a[12] * a[5] * a[11] - a[12] * a[7] * a[9];
+    inv[12] = -a[4] * a[9] * a[14] + a[4] * a[10] * a[13] + a[8] * a[5] * a[14] - a[8] * a[6] * a[13] - a[12] * a[5] * a[10] + a[12] * a[6] * a[9];
+    inv[1] = -a[1] * a[10] * a[15] + a[1] * a[11] * a[14] + a[9] * a[2] * a[15] - a[9] * a[3] * a[14] - a[13] * a[2] * a[11] + a[13] * a[3] * a[10];
+    inv[5] = a[0] * a[10] * a[15] - a[0] * a[11] * a[14] - a[8] * a[2] * a[15] + a[8] * a[3] * a[14] + a[12] * a[2] * a[11] - a[12] * a[3] * a[10];
+    inv[9] = -a[0] * a[9] * a[15] + a[0] * a[11] * a[13] + a[8] * a[1] * a[15] - a[8] * a[3] * a[13] - a[12] * a[1] * a[11] + a[12] * a[3] * a[9];
+    inv[13] = a[0] * a[9] * a[14] - a[0] * a[10] * a[13] - a[8] * a[1] * a[14] + a[8] * a[2] * a[13] + a[12] * a[1] * a[10] - a[12] * a[2] * a[9];
+    inv[2] = a[1] * a[6] * a[15] - a[1] * a[7] * a[14] - a[5] * a[2] * a[15] + a[5] * a[3] * a[14] + a[13] * a[2] * a[7] - a[13] * a[3] * a[6];
+    inv[6] = -a[0] * a[6] * a[15] + a[0] * a[7] * a[14] + a[4] * a[2] * a[15] - a[4] * a[3] * a[14] - a[12] * a[2] * a[7] + a[12] * a[3] * a[6];
+    inv[10] = a[0] * a[5] * a[15] - a[0] * a[7] * a[13] - a[4] * a[1] * a[15] + a[4] * a[3] * a[13] + a[12] * a[1] * a[7] - a[12] * a[3] * a[5];
+    inv[14] = -a[0] * a[5] * a[14] + a[0] * a[6] * a[13] + a[4] * a[1] * a[14] - a[4] * a[2] * a[13] - a[12] * a[1] * a[6] + a[12] * a[2] * a[5];
+    inv[3] = -a[1] * a[6] * a[11] + a[1] * a[7] * a[10] + a[5] * a[2] * a[11] - a[5] * a[3] * a[10] - a[9] * a[2] * a[7] + a[9] * a[3] * a[6];
+    inv[7] = a[0] * a[6] * a[11] - a[0] * a[7] * a[10] - a[4] * a[2] * a[11] + a[4] * a[3] * a[10] + a[8] * a[2] * a[7] - a[8] * a[3] * a[6];
+    inv[11] = -a[0] * a[5] * a[11] + a[0] * a[7] * a[9] + a[4] * a[1] * a[11] - a[4] * a[3] * a[9] - a[8] * a[1] * a[7] + a[8] * a[3] * a[5];
+    inv[15] = a[0] * a[5] * a[10] - a[0] * a[6] * a[9] - a[4] * a[1] * a[10] + a[4] * a[2] * a[9] + a[8] * a[1] * a[6] - a[8] * a[2] * a[5];
+    const double det = a[0] * inv[0] + a[1] * inv[4] + a[2] * inv[8] + a[3] * inv[12];
+    mat4 r;
+    for (int i = 0; i < 16; ++i) r[i / 4][i % 4] = static_cast<float>(inv[i] / det);
     return r;
 }
 

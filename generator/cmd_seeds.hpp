@@ -1,0 +1,190 @@
+// generator/cmd_seeds.hpp — `aogen seeds`: the data of the seeds' own configurations.
+//
+//   aogen seeds --out out/seeds
+//
+// For each preset of params.hpp (Taos SSAO, Taos GTAO, Unique Engine SSAO, the
+// point-cloud viewer's ssao.wgsl) it writes, under DIR/<preset>/:
+//   params.json                    the preset's settings
+//   kernel.json, kernel.rgba32f.bin            the hemisphere kernel (SSAO presets)
+//   noise.<encoding>.bin, noise.json           the 4×4 rotation tile, every encoding
+//   uniforms.<rules>.bin / .json               the pass's uniform block bytes and layout
+//   uniforms.glsl .hlsl .metal .wgsl .<rules>.hpp   its declaration in each language
+// and DIR/manifest.json listing every file with its size. All files are built in memory
+// first and written only when everything succeeded; unchanged files are not rewritten.
+#pragma once
+
+#include "format.hpp"
+#include "output.hpp"
+#include "struct_json.hpp"
+
+#include <aogen/declare.hpp>
+#include <aogen/kernel.hpp>
+#include <aogen/noise.hpp>
+#include <aogen/params.hpp>
+#include <aogen/uniforms.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+
+namespace aogen::cli {
+
+// The example camera the uniform bytes are packed with: 1920×1080, 60° vertical field
+// of view (tan 30° written out, so no libm call enters the bytes), near 0.1, far 100,
+// standard depth, at the world origin looking down −z.
+struct example_camera {
+    static constexpr float tan_half_fov_y = 0.57735026918962576f;
+    static constexpr float width = 1920, height = 1080, near = 0.1f, far = 100.0f;
+    static uniforms::camera get() { return {mat4{}, perspective(tan_half_fov_y, width / height, near, far)}; }
+    static vec2 target(bool half_resolution)
+    {
+        return half_resolution ? vec2{width / 2, height / 2} : vec2{width, height};
+    }
+};
+
+// Each rule set with the declaration language that expresses it and a file suffix.
+struct rules_output {
+    layout::rules rules;
+    layout::language language;
+    const char* declaration_file;
+};
+
+inline const rules_output uniform_outputs[] = {
+    {layout::rules::std140, layout::language::glsl, "uniforms.glsl"},
+    {layout::rules::std430, layout::language::cpp, "uniforms.std430.hpp"},
+    {layout::rules::hlsl_cbuffer, layout::language::hlsl, "uniforms.hlsl"},
+    {layout::rules::msl, layout::language::msl, "uniforms.metal"},
+    {layout::rules::wgsl_uniform, layout::language::wgsl, "uniforms.wgsl"},
+};
+
+class seeds_artifacts {
+public:
+    std::map<std::string, std::string> files; // path relative to DIR → bytes
+
+    void add(const std::string& path, std::string bytes) { files[path] = std::move(bytes); }
+
+    void add_ssao(const ssao_preset& p)
+    {
+        validate(p);
+        const std::string dir = std::string(p.name) + "/";
+        const auto samples = kernel::generate(kernel::distribution_from_name(p.ssao.kernel), p.ssao.samples,
+                                              p.ssao.kernel_seed, kernel::scale_law::crytek);
+        add(dir + "params.json", ssao_json(p).dump(2) + "\n");
+        add(dir + "kernel.json", vec4_array("kernel", samples, text_language::json));
+        add(dir + "kernel.rgba32f.bin", vec4_bytes(samples));
+        add_noise(dir, p.ssao.noise_size, p.ssao.noise_seed);
+        const bool seed004_block = p.ssao.point_cloud_fallback; // the viewer keeps its own block
+        for (const rules_output& o : uniform_outputs) {
+            const layout::block_desc block = seed004_block ? uniforms::pointcloud_block() : uniforms::ssao_block(p.ssao.samples);
+            const std::vector<uint8_t> bytes =
+                seed004_block ? uniforms::pack_pointcloud(p.ssao, example_camera::get().proj, o.rules)
+                              : uniforms::pack_ssao(p.ssao, example_camera::get(), samples,
+                                                    example_camera::target(p.ssao.half_resolution), o.rules);
+            add_uniforms(dir, block, o, bytes);
+        }
+    }
+
+    void add_gtao(const gtao_preset& p)
+    {
+        validate(p);
+        const std::string dir = std::string(p.name) + "/";
+        nlohmann::ordered_json j;
+        j["name"] = p.name;
+        j["gtao"] = {{"radius", json_float(p.gtao.radius)}, {"thickness_bias", json_float(p.gtao.thickness_bias)}, {"strength", json_float(p.gtao.strength)},
+                     {"slices", p.gtao.slices}, {"steps", p.gtao.steps}, {"half_resolution", p.gtao.half_resolution},
+                     {"normals", to_name(p.gtao.normals)}};
+        j["blur"] = blur_json(p.blur);
+        add(dir + "params.json", j.dump(2) + "\n");
+        add_noise(dir, noise::default_size, 2);
+        for (const rules_output& o : uniform_outputs)
+            add_uniforms(dir, uniforms::gtao_block(), o,
+                         uniforms::pack_gtao(p.gtao, example_camera::get(), example_camera::target(p.gtao.half_resolution), o.rules));
+    }
+
+    std::string manifest() const
+    {
+        nlohmann::ordered_json j;
+        j["camera"] = {{"width", example_camera::width}, {"height", example_camera::height},
+                       {"tan_half_fov_y", json_float(example_camera::tan_half_fov_y)}, {"near", json_float(example_camera::near)},
+                       {"far", json_float(example_camera::far)}, {"depth", "standard"}};
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const auto& [path, bytes] : files) list.push_back({{"path", path}, {"bytes", bytes.size()}});
+        j["files"] = list;
+        return j.dump(2) + "\n";
+    }
+
+private:
+    void add_noise(const std::string& dir, int size, uint64_t seed)
+    {
+        const noise::tile tile = noise::rotations(size, seed);
+        add(dir + "noise.json", vec4_array("noise", tile.texels, text_language::json));
+        for (noise::encoding e : {noise::encoding::rgba32f, noise::encoding::rgba16f, noise::encoding::rg16f,
+                                  noise::encoding::rgba8_unorm, noise::encoding::rgba8_snorm}) {
+            const std::vector<uint8_t> bytes = noise::encode(tile, e);
+            add(dir + "noise." + std::string(noise::to_name(e)) + ".bin", std::string(bytes.begin(), bytes.end()));
+        }
+    }
+
+    void add_uniforms(const std::string& dir, const layout::block_desc& block, const rules_output& o,
+                      const std::vector<uint8_t>& bytes)
+    {
+        const layout::struct_layout l = layout::compute(block, o.rules);
+        const std::string rules = layout::to_name(o.rules);
+        add(dir + "uniforms." + rules + ".bin", std::string(bytes.begin(), bytes.end()));
+        add(dir + "uniforms." + rules + ".json", layout_to_json(l).dump(2) + "\n");
+        add(dir + o.declaration_file, layout::declare(l, o.language));
+    }
+
+    static nlohmann::ordered_json blur_json(const blur_params& b)
+    {
+        return {{"mode", to_name(b.mode)}, {"depth", to_name(b.depth)}, {"raw_depth_k", json_float(b.raw_depth_k)},
+                {"linear_sharpness", json_float(b.linear_sharpness)}};
+    }
+
+    static nlohmann::ordered_json ssao_json(const ssao_preset& p)
+    {
+        const ssao_params& s = p.ssao;
+        nlohmann::ordered_json j;
+        j["name"] = p.name;
+        j["ssao"] = {{"samples", s.samples}, {"radius", json_float(s.radius)}, {"bias", json_float(s.bias)}, {"output", to_name(s.output)},
+                     {"strength", json_float(s.strength)}, {"power", json_float(s.power)}, {"intensity", json_float(s.intensity)},
+                     {"range_check", to_name(s.range_check)}, {"kernel", s.kernel}, {"kernel_seed", s.kernel_seed},
+                     {"noise_size", s.noise_size}, {"noise_seed", s.noise_seed},
+                     {"half_resolution", s.half_resolution}, {"normals", to_name(s.normals)},
+                     {"point_cloud_fallback", s.point_cloud_fallback}};
+        j["blur"] = blur_json(p.blur);
+        return j;
+    }
+};
+
+struct seeds_command {
+    std::string out = "out/seeds";
+
+    void add_to(CLI::App& app)
+    {
+        CLI::App* sub = app.add_subcommand("seeds", "Write the kernels, noise tiles and uniform blocks of the seeds' presets");
+        sub->add_option("--out", out, "Output directory")->capture_default_str();
+        sub->callback([this] { run(); });
+    }
+
+    void run() const
+    {
+        seeds_artifacts a;
+        a.add_ssao(presets::taos_ssao());
+        a.add_gtao(presets::taos_gtao());
+        a.add_ssao(presets::unique_engine_ssao());
+        a.add_ssao(presets::pointcloud_viewer_ssao());
+        a.add("manifest.json", a.manifest());
+        size_t written = 0;
+        for (const auto& [path, bytes] : a.files) {
+            const bool changed = write_file_atomically(std::filesystem::path(out) / path, bytes);
+            written += changed;
+            std::cout << (changed ? "wrote     " : "unchanged ") << out << "/" << path << " (" << bytes.size() << " bytes)\n";
+        }
+        std::cout << a.files.size() << " files in " << out << " (" << written << " written, "
+                  << a.files.size() - written << " unchanged)\n";
+    }
+};
+
+} // namespace aogen::cli

@@ -1,0 +1,53 @@
+// aogen — the command line.
+//
+//   aogen layout  --rules R [--emit glsl|hlsl|msl|wgsl|cpp] STRUCT.json
+//   aogen kernel  --kind crytek|cosine|hammersley --count N --seed S --format json|cpp|glsl|wgsl|bin
+//   aogen noise   --size N --seed S --pattern P --encoding E --format json|cpp|bin
+//   aogen seeds   --out DIR     the seeds' default configurations' data, written to DIR
+//
+// Every failure is one line on stderr ("aogen: <what>: <problem> (<valid>)") and a
+// non-zero exit; files are written whole or not at all. `aogen <command> --help` says more.
+#include "cmd_kernel.hpp"
+#include "cmd_layout.hpp"
+#include "cmd_noise.hpp"
+#include "cmd_seeds.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"aogen: ambient-occlusion kernels, noise, uniform layouts and shader variants"};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Show the help of every command");
+
+    aogen::cli::layout_command layout;
+    aogen::cli::kernel_command kernel;
+    aogen::cli::noise_command noise;
+    aogen::cli::seeds_command seeds;
+    layout.add_to(app);
+    kernel.add_to(app);
+    noise.add_to(app);
+    seeds.add_to(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        std::cout << app.help();
+        return 0;
+    } catch (const CLI::CallForAllHelp&) {
+        std::cout << app.help("", CLI::AppFormatMode::All);
+        return 0;
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "aogen: " << e.what() << " (see aogen --help)\n";
+        return 2;
+    } catch (const aogen::error& e) {
+        std::cerr << "aogen: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "aogen: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

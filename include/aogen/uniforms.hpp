@@ -1,0 +1,130 @@
+// aogen/uniforms.hpp — the uniform blocks of the AO passes, and their bytes.
+//
+// Each pass reads its settings and camera from one uniform block. This header holds
+// the blocks' descriptions (for layout.hpp and declare.hpp) and packs a pass's params
+// (params.hpp), camera and kernel into the block's bytes under any rule set, so the
+// same numbers reach a Vulkan std140 buffer, a D3D cbuffer or a WebGPU uniform:
+//
+//     aogen::uniforms::camera cam{world_to_view, aogen::perspective(0.577f, 16 / 9.f, 0.1f, 100)};
+//     auto kernel = aogen::kernel::crytek(16, 1);
+//     std::vector<uint8_t> bytes = aogen::uniforms::pack_ssao(preset.ssao, cam, kernel,
+//                                                             {960, 540}, aogen::layout::rules::std140);
+//
+// Blocks:
+//   SsaoUniforms   hemisphere SSAO (seeds 000, 002, 003): camera, kernel[N], settings
+//   GtaoUniforms   GTAO (seed 001): camera and settings; slices and steps are compile-time
+//   SsaoUniform    seed 004's block exactly (inv_proj, proj, radius, bias, _pad): 144 bytes
+#pragma once
+
+#include "error.hpp"
+#include "layout.hpp"
+#include "layout_writer.hpp"
+#include "math.hpp"
+#include "params.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace aogen::uniforms {
+
+// What every pass needs of the camera. `world_to_view` rotates world-space G-buffer
+// normals into view space; its translation is not used by the passes.
+struct camera {
+    mat4 world_to_view;
+    mat4 proj; // view → clip, see math.hpp for the conventions
+};
+
+// Members every pass block starts with: the projection both ways, the normal
+// transform, and the sizes that map a pixel to the noise tile and to uv.
+inline std::vector<layout::member_desc> camera_members()
+{
+    return {{"proj", "mat4"},         {"inv_proj", "mat4"},   {"world_to_view", "mat4"},
+            {"noise_scale", "vec2"}, // AO target size / noise tile size
+            {"texel_size", "vec2"}}; // 1 / AO target size
+}
+
+inline layout::block_desc ssao_block(int samples)
+{
+    require_range("ssao block samples", samples, ssao_params::samples_range.lo, ssao_params::samples_range.hi);
+    layout::struct_desc s{"SsaoUniforms", camera_members()};
+    for (const char* name : {"radius", "bias", "strength", "power", "intensity"}) s.members.push_back({name, "float"});
+    s.members.push_back({"kernel", "vec4", static_cast<uint32_t>(samples)});
+    return {s, {}};
+}
+
+inline layout::block_desc gtao_block()
+{
+    layout::struct_desc s{"GtaoUniforms", camera_members()};
+    for (const char* name : {"radius", "thickness_bias", "strength"}) s.members.push_back({name, "float"});
+    return {s, {}};
+}
+
+// Seed 004's SsaoUniform, member for member: 144 bytes under std140 and WGSL's uniform rules.
+inline layout::block_desc pointcloud_block()
+{
+    return {{"SsaoUniform",
+             {{"inv_proj", "mat4"}, {"proj", "mat4"}, {"radius", "float"}, {"bias", "float"}, {"_pad", "vec2"}}},
+            {}};
+}
+
+namespace detail {
+
+inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, int noise_size)
+{
+    require_finite_above("uniforms target width", target_size.x, 0, 65536);
+    require_finite_above("uniforms target height", target_size.y, 0, 65536);
+    w.set("proj", cam.proj);
+    w.set("inv_proj", inverse(cam.proj));
+    w.set("world_to_view", cam.world_to_view);
+    w.set("noise_scale", vec2{target_size.x / noise_size, target_size.y / noise_size});
+    w.set("texel_size", vec2{1.0f / target_size.x, 1.0f / target_size.y});
+}
+
+} // namespace detail
+
+// SsaoUniforms bytes. `kernel` must hold p.samples samples; `target_size` is the AO
+// target's size in pixels (half the screen at half resolution).
+inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, const std::vector<vec4>& kernel,
+                                      vec2 target_size, layout::rules rules)
+{
+    validate(p);
+    if (kernel.size() != static_cast<size_t>(p.samples))
+        fail("ssao kernel", std::to_string(kernel.size()) + " samples given",
+             "valid: ssao.samples = " + std::to_string(p.samples) + " samples");
+    layout::writer w(layout::compute(ssao_block(p.samples), rules));
+    detail::set_camera(w, cam, target_size, p.noise_size);
+    w.set("radius", p.radius);
+    w.set("bias", p.bias);
+    w.set("strength", p.strength);
+    w.set("power", p.power);
+    w.set("intensity", p.intensity);
+    w.set("kernel", kernel);
+    return w.bytes();
+}
+
+// GtaoUniforms bytes; GTAO uses no noise tile of its own beyond a 4×4 rotation.
+inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
+                                      int noise_size = 4)
+{
+    validate(p);
+    layout::writer w(layout::compute(gtao_block(), rules));
+    detail::set_camera(w, cam, target_size, noise_size);
+    w.set("radius", p.radius);
+    w.set("thickness_bias", p.thickness_bias);
+    w.set("strength", p.strength);
+    return w.bytes();
+}
+
+// Seed 004's SsaoUniform bytes (the padding member stays zero).
+inline std::vector<uint8_t> pack_pointcloud(const ssao_params& p, const mat4& proj, layout::rules rules)
+{
+    validate(p);
+    layout::writer w(layout::compute(pointcloud_block(), rules));
+    w.set("inv_proj", inverse(proj));
+    w.set("proj", proj);
+    w.set("radius", p.radius);
+    w.set("bias", p.bias);
+    return w.bytes();
+}
+
+} // namespace aogen::uniforms
