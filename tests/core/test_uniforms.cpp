@@ -1,0 +1,139 @@
+// The passes' uniform blocks: seed 004's SsaoUniform must be exactly the 144 bytes its
+// WGSL declares, and every pass block's bytes must hold the values at the offsets the
+// layout rules give — checked here against offsets worked out by hand from the rules,
+// and against a byte image assembled independently of the writer.
+#include <aogen/kernel.hpp>
+#include <aogen/uniforms.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace aogen;
+using layout::rules;
+
+namespace {
+
+float float_at(const std::vector<uint8_t>& bytes, size_t offset)
+{
+    REQUIRE(offset + 4 <= bytes.size());
+    float f;
+    std::memcpy(&f, bytes.data() + offset, 4);
+    return f;
+}
+
+void put_float(std::vector<uint8_t>& bytes, size_t offset, float f) { std::memcpy(bytes.data() + offset, &f, 4); }
+
+// perspective(tan 1, aspect 1, near 1, far 3): columns (1,0,0,0) (0,1,0,0) (0,0,−1.5,−1)
+// (0,0,−1.5,0); its inverse, worked out by hand: (1,0,0,0) (0,1,0,0) (0,0,0,−2/3) (0,0,−1,1).
+const float simple_proj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.5f, -1, 0, 0, -1.5f, 0};
+const float simple_inv_proj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, static_cast<float>(-2.0 / 3.0), 0, 0, -1, 1};
+
+} // namespace
+
+TEST_CASE("perspective and inverse match the hand-worked matrices", "[uniforms]")
+{
+    const mat4 p = perspective(1.0f, 1.0f, 1.0f, 3.0f);
+    const mat4 inv = inverse(p);
+    for (int i = 0; i < 16; ++i) {
+        CHECK(p[i / 4][i % 4] == simple_proj[i]);
+        CHECK(inv[i / 4][i % 4] == simple_inv_proj[i]);
+    }
+}
+
+TEST_CASE("seed 004's SsaoUniform is 144 bytes with the seed's offsets under every uniform rule set", "[uniforms]")
+{
+    for (rules r : {rules::std140, rules::std430, rules::wgsl_uniform, rules::hlsl_cbuffer, rules::msl, rules::scalar}) {
+        INFO(layout::to_name(r));
+        const layout::struct_layout l = layout::compute(uniforms::pointcloud_block(), r);
+        CHECK(l.size == 144);
+        CHECK(layout::find(l, "inv_proj")->offset == 0);
+        CHECK(layout::find(l, "proj")->offset == 64);
+        CHECK(layout::find(l, "radius")->offset == 128);
+        CHECK(layout::find(l, "bias")->offset == 132);
+        CHECK(layout::find(l, "_pad")->offset == 136);
+    }
+}
+
+TEST_CASE("seed 004's SsaoUniform bytes equal an independently assembled image", "[uniforms]")
+{
+    ssao_params p = presets::pointcloud_viewer_ssao().ssao;
+    p.radius = 0.75f;
+    p.bias = 0.03125f;
+    mat4 proj;
+    std::memcpy(&proj, simple_proj, sizeof proj);
+    std::vector<uint8_t> expected(144, 0);
+    for (int i = 0; i < 16; ++i) put_float(expected, 4 * i, simple_inv_proj[i]);
+    for (int i = 0; i < 16; ++i) put_float(expected, 64 + 4 * i, simple_proj[i]);
+    put_float(expected, 128, 0.75f);
+    put_float(expected, 132, 0.03125f);
+    for (rules r : {rules::std140, rules::wgsl_uniform, rules::hlsl_cbuffer}) {
+        INFO(layout::to_name(r));
+        CHECK(uniforms::pack_pointcloud(p, proj, r) == expected);
+    }
+}
+
+TEST_CASE("Taos SSAO block: sizes and offsets worked out from each rule set", "[uniforms]")
+{
+    // 3 mat4 (192 bytes), vec2 at 192 and 200, five floats at 208..224, then vec4[16]:
+    // at 240 where a vec4 array aligns to 16, at 228 under scalar rules.
+    struct expectation { rules r; uint32_t kernel_offset, size; };
+    for (expectation e : {expectation{rules::std140, 240, 496}, {rules::std430, 240, 496}, {rules::scalar, 228, 484},
+                          {rules::wgsl_uniform, 240, 496}, {rules::hlsl_cbuffer, 240, 496}, {rules::msl, 240, 496}}) {
+        INFO(layout::to_name(e.r));
+        const layout::struct_layout l = layout::compute(uniforms::ssao_block(16), e.r);
+        CHECK(l.size == e.size);
+        CHECK(layout::find(l, "kernel")->offset == e.kernel_offset);
+        CHECK(layout::find(l, "intensity")->offset == 224);
+    }
+}
+
+TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[uniforms]")
+{
+    const ssao_preset preset = presets::taos_ssao();
+    const std::vector<vec4> kernel = kernel::crytek(16, 1);
+    mat4 proj;
+    std::memcpy(&proj, simple_proj, sizeof proj);
+    const uniforms::camera cam{mat4{}, proj};
+    const std::vector<uint8_t> bytes = uniforms::pack_ssao(preset.ssao, cam, kernel, {960, 540}, rules::std140);
+    REQUIRE(bytes.size() == 496);
+    CHECK(float_at(bytes, 0) == 1.0f);                 // proj[0][0]
+    CHECK(float_at(bytes, 64 + 4 * 11) == simple_inv_proj[11]);
+    CHECK(float_at(bytes, 128) == 1.0f);               // world_to_view = identity
+    CHECK(float_at(bytes, 192) == 240.0f);             // noise_scale = 960 / 4
+    CHECK(float_at(bytes, 196) == 135.0f);             // 540 / 4
+    CHECK(float_at(bytes, 200) == 1.0f / 960.0f);      // texel_size
+    CHECK(float_at(bytes, 208) == 0.5f);               // radius
+    CHECK(float_at(bytes, 212) == 0.025f);             // bias
+    CHECK(float_at(bytes, 216) == 1.0f);               // strength
+    for (int i = 0; i < 16; ++i) {
+        CHECK(float_at(bytes, 240 + 16 * i) == kernel[i].x);
+        CHECK(float_at(bytes, 240 + 16 * i + 8) == kernel[i].z);
+    }
+    for (size_t pad = 228; pad < 240; ++pad) CHECK(bytes[pad] == 0);
+}
+
+TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[uniforms]")
+{
+    CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 224);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 220);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 224);
+    const std::vector<uint8_t> bytes =
+        uniforms::pack_gtao(presets::taos_gtao().gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
+    CHECK(float_at(bytes, 208) == 1.0f);  // radius (seed 001)
+    CHECK(float_at(bytes, 212) == 0.1f);  // thickness bias
+    CHECK(float_at(bytes, 216) == 2.0f);  // strength exponent
+}
+
+TEST_CASE("Packing rejects a kernel of the wrong size and invalid params", "[uniforms]")
+{
+    const ssao_preset preset = presets::taos_ssao();
+    const uniforms::camera cam{mat4{}, perspective(1, 1, 1, 3)};
+    CHECK_THROWS_WITH(uniforms::pack_ssao(preset.ssao, cam, kernel::crytek(8, 1), {960, 540}, rules::std140),
+                      Catch::Contains("ssao kernel") && Catch::Contains("16"));
+    ssao_params bad = preset.ssao;
+    bad.radius = -1;
+    CHECK_THROWS_WITH(uniforms::pack_ssao(bad, cam, kernel::crytek(16, 1), {960, 540}, rules::std140),
+                      Catch::Contains("ssao.radius"));
+    CHECK_THROWS_AS(uniforms::pack_ssao(preset.ssao, cam, kernel::crytek(16, 1), {0, 540}, rules::std140), aogen::error);
+}
