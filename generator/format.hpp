@@ -36,7 +36,7 @@ inline std::string vec4_literal(const vec4& v, text_language lang, int component
     std::string out;
     for (int i = 0; i < components; ++i) out += (i ? ", " : "") + float_literal(values[i], lang);
     switch (lang) {
-    case text_language::json:
+    case text_language::json: return "[" + out + "]";
     case text_language::cpp: return "{" + out + "}";
     case text_language::glsl: return "vec" + std::to_string(components) + "(" + out + ")";
     case text_language::wgsl: return "vec" + std::to_string(components) + "<f32>(" + out + ")";

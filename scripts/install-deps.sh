@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  python3                     # test scripts read JSON and bytes
   catch2                      # tests (Catch2 v2)
   nlohmann-json3-dev          # the command line's JSON
   libcli11-dev                # the command line's arguments

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# Tests of the `aogen` command line, one case per ctest test:
+#   cli_test.sh AOGEN SOURCE_DIR CASE
+# Oracles: golden files checked by hand (tests/golden/), glslangValidator for the GLSL
+# the command line prints, and the file system for "nothing half-written".
+set -uo pipefail
+aogen=$(realpath "$1") source=$(realpath "$2") case=$3
+golden=$source/tests/golden
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+check() { # check DESCRIPTION COMMAND... : the command must succeed
+  if ! "${@:2}"; then echo "FAILED: $1"; failures=$((failures + 1)); fi
+}
+
+# expect_error DESCRIPTION PATTERN ARGS...: run in an empty directory; exit non-zero, one
+# line on stderr matching PATTERN, nothing on stdout, and no file left behind. Inputs
+# are named by absolute path ($in/...).
+in=$work/in
+mkdir -p "$in"
+expect_error() {
+  local description=$1 pattern=$2; shift 2
+  local dir; dir=$(mktemp -d -p "$work")
+  (cd "$dir" && "$aogen" "$@" >"$work/stdout" 2>"$work/stderr"); local rc=$?
+  local lines; lines=$(wc -l <"$work/stderr")
+  if [ "$rc" -eq 0 ]; then echo "FAILED: $description: exit 0"; failures=$((failures + 1));
+  elif [ "$lines" -ne 1 ]; then echo "FAILED: $description: $lines lines on stderr:"; cat "$work/stderr"; failures=$((failures + 1));
+  elif ! grep -qE -- "$pattern" "$work/stderr"; then echo "FAILED: $description: stderr lacks /$pattern/:"; cat "$work/stderr"; failures=$((failures + 1));
+  elif [ -s "$work/stdout" ]; then echo "FAILED: $description: wrote to stdout"; failures=$((failures + 1));
+  fi
+  local left; left=$(ls -A "$dir")
+  if [ -n "$left" ]; then echo "FAILED: $description: left files behind: $left"; failures=$((failures + 1)); fi
+}
+
+case $case in
+help)
+  for sub in "" layout kernel noise seeds; do
+    check "aogen $sub --help" bash -c "'$aogen' $sub --help | grep -q Usage"
+  done
+  expect_error "no command" "A subcommand is required|subcommand"
+  ;;
+layout_golden)
+  check "std140 JSON" diff -u "$golden/params.std140.json" <("$aogen" layout --rules std140 "$golden/params.json")
+  check "hlsl declaration" diff -u "$golden/params.hlsl" <("$aogen" layout --rules hlsl-cbuffer --emit hlsl "$golden/params.json")
+  check "glsl declaration" diff -u "$golden/params.glsl" <("$aogen" layout --rules std140 --emit glsl --binding 3 "$golden/params.json")
+  "$aogen" layout --rules std430 --emit cpp --out "$work/params.hpp" "$golden/params.json"
+  check "cpp declaration compiles with its static_asserts" c++ -std=c++17 -fsyntax-only -x c++ "$work/params.hpp"
+  ;;
+layout_errors)
+  cp "$golden/params.json" "$in/input.json"
+  expect_error "unknown rules" "'std150' is not a rule set.*valid: std140" layout --rules std150 "$in/input.json"
+  expect_error "unknown language" "'glsl2'.*valid: glsl, hlsl" layout --rules std140 --emit glsl2 "$in/input.json"
+  expect_error "language without its rules" "cannot express std140.*valid rules: hlsl-cbuffer" layout --rules std140 --emit hlsl "$in/input.json"
+  expect_error "missing file" "nope.json: cannot be read" layout --rules std140 --out out.json "$in/nope.json"
+  printf '{"name": "P", "members": [{"name": "a", "type": "flaot"}]}' >"$in/input_type.json"
+  expect_error "unknown type" "P.a: unknown type 'flaot'.*valid: float" layout --rules std140 --out out.json "$in/input_type.json"
+  printf '{"name": "P", "members": [' >"$in/input_broken.json"
+  expect_error "malformed JSON" "input_broken.json: is not valid JSON" layout --rules std140 --out out.json "$in/input_broken.json"
+  printf '{"name": "P", "members": [{"name": "a", "type": "float", "count": -2}]}' >"$in/input_count.json"
+  expect_error "negative count" "members\[0\].count: -2 is out of range.*0..1048576" layout --rules std140 --out out.json "$in/input_count.json"
+  printf '{"name": "P", "members": [{"name": "a", "type": "float", "cout": 2}]}' >"$in/input_key.json"
+  expect_error "unknown key" "members\[0\].cout: is not a known key.*valid: name, type, count" layout --rules std140 "$in/input_key.json"
+  printf '{"name": "P", "members": [{"name": "a", "type": "vec4", "count": 0}]}' >"$in/input_runtime.json"
+  expect_error "runtime array in a uniform block" "P.a: .*runtime-sized array.*rules: std140" layout --rules std140 "$in/input_runtime.json"
+  printf '{"name": "P", "members": [{"name": "a", "type": "float", "count": 4}]}' >"$in/input_stride.json"
+  expect_error "WGSL uniform array stride" "P.a: array stride 4 is not a multiple of 16.*rules: wgsl-uniform" layout --rules wgsl-uniform "$in/input_stride.json"
+  ;;
+kernel)
+  "$aogen" kernel --kind crytek --count 16 --seed 3 --format bin --out "$work/k.bin"
+  check "bin is 16 vec4s" test "$(stat -c %s "$work/k.bin")" -eq 256
+  check "same seed, same bytes" cmp "$work/k.bin" <("$aogen" kernel --kind crytek --count 16 --seed 3 --format bin)
+  check "another seed, other bytes" bash -c "! cmp -s '$work/k.bin' <('$aogen' kernel --kind crytek --count 16 --seed 4 --format bin)"
+  for kind in crytek cosine hammersley; do
+    { echo '#version 450'; "$aogen" kernel --kind $kind --count 8 --format glsl;
+      echo 'layout(local_size_x = 1) in; layout(std430, binding = 0) buffer O { vec4 o[]; }; void main() { o[0] = aogen_kernel[7]; }'; } >"$work/k_$kind.comp"
+    check "$kind GLSL constant compiles" glslangValidator -V -o "$work/k.spv" "$work/k_$kind.comp" >/dev/null
+  done
+  "$aogen" kernel --format cpp --count 4 >"$work/k.cpp"
+  check "cpp constant compiles" c++ -std=c++17 -fsyntax-only "$work/k.cpp"
+  "$aogen" kernel --format json --count 5 >"$work/k.json"
+  check "json holds 5 samples" python3 -c "import json; assert len(json.load(open('$work/k.json'))['samples']) == 5"
+  expect_error "count 0" "kernel count: 0 is out of range \(valid: 1..256\)" kernel --count 0 --format bin --out k.bin
+  expect_error "count 257" "kernel count: 257 is out of range \(valid: 1..256\)" kernel --count 257
+  expect_error "unknown kind" "kernel distribution.*valid: crytek, cosine, hammersley" kernel --kind blue
+  expect_error "unknown format" "--format: 'yaml'.*valid: json, cpp, glsl, wgsl, bin" kernel --format yaml --out k.txt
+  ;;
+noise)
+  "$aogen" noise --size 4 --seed 2 --encoding rgba8_unorm --format bin --out "$work/n.bin"
+  check "rgba8 4x4 is 64 bytes" test "$(stat -c %s "$work/n.bin")" -eq 64
+  "$aogen" noise --size 8 --encoding rgba16f --format bin --out "$work/n16.bin"
+  check "rgba16f 8x8 is 512 bytes" test "$(stat -c %s "$work/n16.bin")" -eq 512
+  check "every rgba8_unorm texel has z = 128, w = 255" python3 -c "
+b = open('$work/n.bin', 'rb').read()
+assert all(b[i + 2] == 128 and b[i + 3] == 255 for i in range(0, 64, 4)), b"
+  "$aogen" noise --format cpp --pattern r2 >"$work/n.cpp"
+  check "cpp array compiles" c++ -std=c++17 -fsyntax-only "$work/n.cpp"
+  expect_error "size 0" "noise size: 0 is out of range \(valid: 1..64\)" noise --size 0
+  expect_error "unknown encoding" "rgba8_srgb.*valid: rgba32f" noise --encoding rgba8_srgb --out n.bin
+  ;;
+seeds)
+  "$aogen" seeds --out "$work/seeds" >"$work/first.txt"
+  check "wrote 95 files" grep -q "^95 files in .* (95 written, 0 unchanged)" "$work/first.txt"
+  "$aogen" seeds --out "$work/seeds" >"$work/second.txt"
+  check "second run rewrites nothing" grep -q "(0 written, 95 unchanged)" "$work/second.txt"
+  check "golden bytes" diff -u "$golden/seeds.sha256" <(cd "$work/seeds" && find . -type f | LC_ALL=C sort | xargs sha256sum)
+  check "no temporary files" bash -c "! find '$work/seeds' -name '*.tmp*' | grep -q ."
+  check "seed 004's block is 144 bytes" test "$(stat -c %s "$work/seeds/pointcloud_viewer_ssao/uniforms.wgsl-uniform.bin")" -eq 144
+  for f in "$work"/seeds/*/uniforms.glsl; do
+    { echo '#version 450'; cat "$f"; echo 'layout(local_size_x = 1) in; void main() {}'; } >"$work/u.comp"
+    check "$f compiles" glslangValidator -V -o "$work/u.spv" "$work/u.comp" >/dev/null
+  done
+  for f in "$work"/seeds/*/uniforms.hlsl; do
+    { cat "$f"; echo '[numthreads(1, 1, 1)] void main() {}'; } >"$work/u.hlsl"
+    check "$f compiles" glslangValidator -V -D -e main -S comp -o "$work/u.spv" "$work/u.hlsl" >/dev/null
+  done
+  for f in "$work"/seeds/*/uniforms.std430.hpp; do
+    check "$f compiles" c++ -std=c++17 -fsyntax-only -x c++ "$f"
+  done
+  ;;
+*) echo "unknown case $case"; exit 2 ;;
+esac
+
+[ "$failures" -eq 0 ] && echo "cli $case: passed" || { echo "cli $case: $failures failed"; exit 1; }
