@@ -359,6 +359,7 @@ public:
         result.rule = rule_;
         result.name = block_.root.name;
         if (!is_identifier(result.name)) fail("block name", "'" + result.name + "' is not an identifier", "valid: letters, digits and _, not starting with a digit");
+        if (structs_.count(result.name)) fail("block name", "'" + result.name + "' is also the name of a struct", "valid: a name no struct in block.structs uses");
         lay_out(block_.root, block_.root.name, /*top_level=*/true, result.members, result.size, result.align);
         if (rule_ == rules::hlsl_cbuffer) result.size = round_up(result.size, 16); // a cbuffer is whole registers
         return result;
