@@ -119,8 +119,10 @@ struct block_desc {
     std::vector<struct_desc> structs; // struct types its members may name
 };
 
-// The largest array count accepted; keeps every size well inside 32 bits.
+// The largest array count accepted, and the largest block (1 GiB): every size and
+// offset then fits in 32 bits with room to spare, and no real buffer is larger.
 inline constexpr uint32_t max_array_count = 1u << 20;
+inline constexpr uint32_t max_block_bytes = 1u << 30;
 
 // ---------------------------------------------------------------------------------
 // Value types: scalars, vectors and matrices
@@ -341,14 +343,38 @@ inline bool is_identifier(std::string_view s)
     return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
+// Words a declaration in some target language could not use as a name: keywords and
+// type names of GLSL, HLSL, MSL, WGSL and C++ that a struct member might plausibly be
+// called. (Built-in GLSL type names are caught separately, by parse_value_type.)
+inline bool is_reserved_word(std::string_view s)
+{
+    static const char* const words[] = {
+        "alignas", "alignof", "auto", "bool", "break", "buffer", "case", "cbuffer", "char", "class",
+        "const", "constant", "continue", "default", "delete", "device", "discard", "do", "double", "else", "enum",
+        "extern", "f16", "f32", "false", "fn", "for", "half", "i32", "if", "in", "inout", "layout", "let", "long",
+        "namespace", "new", "out", "override", "packoffset", "private", "public", "register", "return", "sampler",
+        "short", "signed", "sizeof", "static", "struct", "switch", "template", "texture", "this", "thread", "true",
+        "typedef", "typename", "u32", "uniform", "union", "unsigned", "var", "void", "volatile", "while"};
+    if (s.rfind("gl_", 0) == 0) return true; // GLSL reserves the prefix
+    return std::any_of(std::begin(words), std::end(words), [&](const char* w) { return s == w; }) ||
+           parse_value_type(s).has_value();
+}
+
+inline void require_name(const std::string& subject, const std::string& name)
+{
+    if (!is_identifier(name))
+        fail(subject, "'" + name + "' is not an identifier", "valid: letters, digits and _, not starting with a digit");
+    if (is_reserved_word(name))
+        fail(subject, "'" + name + "' is a keyword or type name of a target language", "valid: any other identifier");
+}
+
 // Computes struct layouts recursively; each named struct is laid out once per rule set.
 class engine {
 public:
     engine(const block_desc& block, rules r) : block_(block), rule_(r)
     {
         for (const struct_desc& s : block.structs) {
-            if (!is_identifier(s.name)) fail("struct name", "'" + s.name + "' is not an identifier", "valid: letters, digits and _, not starting with a digit");
-            if (parse_value_type(s.name)) fail("struct " + s.name, "the name is a built-in type", "valid: any other identifier");
+            require_name("struct name", s.name);
             if (!structs_.emplace(s.name, &s).second) fail("struct " + s.name, "is defined twice", "valid: one definition per struct name");
         }
     }
@@ -358,7 +384,7 @@ public:
         struct_layout result;
         result.rule = rule_;
         result.name = block_.root.name;
-        if (!is_identifier(result.name)) fail("block name", "'" + result.name + "' is not an identifier", "valid: letters, digits and _, not starting with a digit");
+        require_name("block name", result.name);
         if (structs_.count(result.name)) fail("block name", "'" + result.name + "' is also the name of a struct", "valid: a name no struct in block.structs uses");
         lay_out(block_.root, block_.root.name, /*top_level=*/true, result.members, result.size, result.align);
         if (rule_ == rules::hlsl_cbuffer) result.size = round_up(result.size, 16); // a cbuffer is whole registers
@@ -379,7 +405,7 @@ private:
         for (size_t i = 0; i < s.members.size(); ++i) {
             const member_desc& d = s.members[i];
             const std::string member_path = path + "." + d.name;
-            if (!is_identifier(d.name)) fail(member_path, "'" + d.name + "' is not an identifier", "valid: letters, digits and _, not starting with a digit");
+            require_name(member_path, d.name);
             if (!names.insert(d.name).second) fail(member_path, "is declared twice", "valid: unique member names");
             if (d.count == 0u) check_runtime_array(member_path, top_level, i + 1 == s.members.size());
             if (d.count && *d.count > max_array_count)
@@ -391,6 +417,9 @@ private:
         uint32_t cursor = 0, widest = 4;
         for (member_layout& m : members) {
             m.offset = place(rule_, cursor, m);
+            if (uint64_t{m.offset} + m.size > max_block_bytes)
+                fail(path + "." + m.name, "ends at byte " + std::to_string(uint64_t{m.offset} + m.size) + ", past the largest block",
+                     "valid: blocks up to " + std::to_string(max_block_bytes) + " bytes");
             cursor = m.offset + m.size;
             widest = std::max(widest, m.align);
         }
@@ -406,14 +435,24 @@ private:
             fail_member(rule_, path, "a runtime-sized array must be the last member of the top-level block");
     }
 
+    // Made of scalars alone, through any nesting: what std430 aligns to 4 bytes.
+    static bool only_scalars(const member_layout& m)
+    {
+        if (m.is_struct()) return std::all_of(m.members.begin(), m.members.end(), only_scalars);
+        return m.value->is_scalar();
+    }
+
     // Metal stores a float3 in 16 bytes; SPIRV-Cross emits packed_float3 (12 bytes,
-    // 4-aligned) when a scalar follows it, so the scalar fills the fourth lane.
+    // 4-aligned) when the next member is made of scalars (a scalar, a scalar array, a
+    // struct of scalars), which std430 places in the vector's fourth lane. A struct that
+    // Metal aligns to 4 only because it holds a packed vector itself does not count:
+    // std430 still aligns it to 16.
     void pack_msl_vectors(std::vector<member_layout>& members)
     {
         for (size_t i = 0; i + 1 < members.size(); ++i) {
             member_layout& m = members[i];
             if (m.is_array() || m.is_struct() || !m.value->is_vector() || m.value->rows != 3) continue;
-            if (members[i + 1].align > 4) continue;
+            if (!only_scalars(members[i + 1])) continue;
             m.packed = true;
             m.size = m.element_size = 12;
             m.align = 4;
@@ -448,6 +487,9 @@ private:
             if (rule_ == rules::wgsl_uniform && step.size % 16 != 0)
                 fail_member(rule_, path, "array stride " + std::to_string(step.size) +
                                              " is not a multiple of 16 in the uniform address space; use a vec4 (or a 16-byte struct) element");
+            if (uint64_t{*d.count} * step.size > max_block_bytes)
+                fail(path, std::to_string(*d.count) + " elements of " + std::to_string(step.size) + " bytes exceed the largest block",
+                     "valid: blocks up to " + std::to_string(max_block_bytes) + " bytes");
             m.array_stride = step.size;
             m.align = step.align;
             m.size = array_size(rule_, *d.count, step.size, element.size);

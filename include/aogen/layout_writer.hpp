@@ -37,12 +37,15 @@ public:
     explicit writer(struct_layout layout, uint32_t runtime_elements = 0)
         : layout_(std::move(layout)), runtime_elements_(runtime_elements)
     {
-        uint32_t size = layout_.size;
+        uint64_t size = layout_.size;
         if (!layout_.members.empty() && layout_.members.back().is_runtime_array()) {
             const member_layout& last = layout_.members.back();
-            size = std::max(size, last.offset + last.array_stride * runtime_elements);
+            size = std::max(size, uint64_t{last.offset} + uint64_t{last.array_stride} * runtime_elements);
         }
-        bytes_.assign(size, 0);
+        if (size > max_block_bytes)
+            fail("runtime elements of " + layout_.name, std::to_string(runtime_elements) + " make a " + std::to_string(size) + "-byte buffer",
+                 "valid: buffers up to " + std::to_string(max_block_bytes) + " bytes");
+        bytes_.assign(static_cast<size_t>(size), 0);
     }
 
     const struct_layout& layout() const { return layout_; }

@@ -464,13 +464,13 @@ TEST_CASE("hlsl-cbuffer: an array of 16-byte structs has stride 16", "[layout][h
 
 TEST_CASE("hlsl-cbuffer: nested struct sizes are not rounded up, the cbuffer is", "[layout][hlsl]")
 {
-    // [MS-legacy] rules 4-5: Inner { float4 a; float b; } is 20 bytes; Outer { Inner in; float x; }
+    // [MS-legacy] rules 4-5: Inner { float4 a; float b; } is 20 bytes; Outer { Inner i; float x; }
     // puts x at 20 and is 24 bytes; in the cbuffer, y follows o at 24. Only the cbuffer itself
     // is whole registers (32).
     const struct_layout l = cbuffer({{"C", {{"o", "Outer"}, {"y", "float"}}},
                                      {{"Inner", {{"a", "vec4"}, {"b", "float"}}},
-                                      {"Outer", {{"in", "Inner"}, {"x", "float"}}}}});
-    CHECK(at(l, "o.in").size == 20);
+                                      {"Outer", {{"i", "Inner"}, {"x", "float"}}}}});
+    CHECK(at(l, "o.i").size == 20);
     CHECK(at(l, "o.x").offset == 20);
     check(l, "o", 0, 24);
     check(l, "y", 24, 4);

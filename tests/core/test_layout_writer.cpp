@@ -321,13 +321,13 @@ TEST_CASE("writer: a runtime-sized array of vec3 under wgsl-storage has stride 1
     CHECK(w.bytes() == expected);
 }
 
-// LIBRARY BUG (reported): writer(layout, n) computes offset + stride * n in uint32_t. With
+// Regression: writer(layout, n) once computed offset + stride * n in uint32_t. With
 // std430 { uint count; vec4 data[]; } (data at 16, stride 16) and n = 1 << 28 the buffer should
 // be 16 + 2^32 bytes; it wraps and the writer allocates 16 bytes while accepting indices up to
 // n - 1, so w.set("data[1]", vec4{}) writes past the end of the vector. Expected: an
 // aogen::error for an n whose buffer does not fit in 32 bits. (The test only constructs the
 // writer; it never writes through it.)
-TEST_CASE("LIBRARY BUG: a runtime element count whose buffer exceeds 32 bits is rejected", "[writer][errors][library-bug]")
+TEST_CASE("writer: a runtime element count whose buffer exceeds 32 bits is rejected", "[writer][errors][limits]")
 {
     const struct_layout l = compute({{"B", {{"count", "uint"}, {"data", "vec4", 0u}}}, {}}, rules::std430);
     CHECK_THROWS_AS(writer(l, 1u << 28), aogen::error);
