@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <string>
 #include <vector>
 
@@ -15,18 +17,9 @@ using Catch::Contains;
 using Catch::StartsWith;
 using namespace aogen::layout;
 
-namespace {
+using aogen_test::error_of;
 
-template <class F>
-std::string error_of(F&& f)
-{
-    try {
-        f();
-    } catch (const aogen::error& e) {
-        return e.what();
-    }
-    return "<no aogen::error thrown>";
-}
+namespace {
 
 size_t count_of(const std::string& text, const std::string& what)
 {

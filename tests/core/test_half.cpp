@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -14,21 +16,10 @@
 using aogen::float_to_half;
 using aogen::half_to_float;
 
+using aogen_test::bits_of;
+using aogen_test::float_from_bits;
+
 namespace {
-
-float float_from_bits(uint32_t bits)
-{
-    float value;
-    std::memcpy(&value, &bits, sizeof value);
-    return value;
-}
-
-uint32_t bits_of(float value)
-{
-    uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
 
 bool half_is_nan(uint16_t h) { return (h & 0x7c00u) == 0x7c00u && (h & 0x03ffu) != 0; }
 

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,14 +15,9 @@
 namespace kernel = aogen::kernel;
 using aogen::vec4;
 
-namespace {
+using aogen_test::bits_of;
 
-uint32_t bits_of(float value)
-{
-    uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
+namespace {
 
 double length_of(vec4 v)
 {

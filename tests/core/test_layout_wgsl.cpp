@@ -28,32 +28,18 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <string>
 #include <vector>
 
 using Catch::Contains;
 using namespace aogen::layout;
 
+using aogen_test::error_of;
+using aogen_test::at;
+
 namespace {
-
-template <class F>
-std::string error_of(F&& f)
-{
-    try {
-        f();
-    } catch (const aogen::error& e) {
-        return e.what();
-    }
-    return "<no aogen::error thrown>";
-}
-
-const member_layout& at(const struct_layout& l, const char* path)
-{
-    const member_layout* m = find(l, path);
-    INFO("member " << path);
-    REQUIRE(m != nullptr);
-    return *m;
-}
 
 void check(const struct_layout& l, const char* path, uint32_t offset, uint32_t size, uint32_t align)
 {

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -18,18 +20,9 @@ using aogen::vec2;
 using aogen::vec3;
 using aogen::vec4;
 
-namespace {
+using aogen_test::error_of;
 
-template <class F>
-std::string error_of(F&& f)
-{
-    try {
-        f();
-    } catch (const aogen::error& e) {
-        return e.what();
-    }
-    return "<no aogen::error thrown>";
-}
+namespace {
 
 // Writes the 4 little-endian bytes of a float, int or uint at `offset` of `bytes`.
 template <class T>

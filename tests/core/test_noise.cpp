@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -14,14 +16,9 @@
 namespace noise = aogen::noise;
 using aogen::vec4;
 
-namespace {
+using aogen_test::bits_of;
 
-uint32_t bits_of(float value)
-{
-    uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
+namespace {
 
 const double pi = 3.14159265358979323846;
 

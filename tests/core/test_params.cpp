@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support.hpp"
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,19 +15,9 @@
 
 using Catch::Contains;
 
-namespace {
+using aogen_test::error_of;
 
-// The aogen::error message `f` throws; any other exception fails the test by escaping.
-template <class F>
-std::string error_of(F&& f)
-{
-    try {
-        f();
-    } catch (const aogen::error& e) {
-        return e.what();
-    }
-    return "<no aogen::error thrown>";
-}
+namespace {
 
 template <class P>
 struct float_field {

@@ -1,0 +1,50 @@
+// tests/support.hpp — small helpers the test files share.
+#pragma once
+
+#include <aogen/error.hpp>
+#include <aogen/layout.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace aogen_test {
+
+// The aogen::error message `f` throws; any other exception fails the test by escaping.
+template <class F>
+std::string error_of(F&& f)
+{
+    try {
+        f();
+    } catch (const aogen::error& e) {
+        return e.what();
+    }
+    return "<no aogen::error thrown>";
+}
+
+inline uint32_t bits_of(float value)
+{
+    uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+inline float float_from_bits(uint32_t bits)
+{
+    float value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+// The member at `path` of a layout; fails the test when there is none.
+inline const aogen::layout::member_layout& at(const aogen::layout::struct_layout& l, const char* path)
+{
+    const aogen::layout::member_layout* m = aogen::layout::find(l, path);
+    INFO("member " << path);
+    REQUIRE(m != nullptr);
+    return *m;
+}
+
+} // namespace aogen_test
