@@ -24,7 +24,9 @@
 
 #include "error.hpp"
 #include "layout.hpp"
+#include "names.hpp"
 
+#include <array>
 #include <cctype>
 #include <functional>
 #include <set>
@@ -36,27 +38,24 @@ namespace aogen::layout {
 
 enum class language { glsl, hlsl, msl, wgsl, cpp };
 
-inline constexpr language all_languages[] = {language::glsl, language::hlsl, language::msl, language::wgsl,
-                                              language::cpp};
+// The languages' names, as the command line spells them (see names.hpp).
+inline constexpr std::array<enum_name<language>, 5> language_table{{
+    {language::glsl, "glsl"},
+    {language::hlsl, "hlsl"},
+    {language::msl, "msl"},
+    {language::wgsl, "wgsl"},
+    {language::cpp, "cpp"},
+}};
+static_assert(names::distinct(language_table));
 
-inline const char* to_name(language l)
-{
-    switch (l) {
-    case language::glsl: return "glsl";
-    case language::hlsl: return "hlsl";
-    case language::msl: return "msl";
-    case language::wgsl: return "wgsl";
-    case language::cpp: return "cpp";
-    }
-    return "?";
-}
+// Every language, in table order.
+inline constexpr std::array<language, language_table.size()> all_languages = names::values(language_table);
 
-inline language language_from_name(std::string_view name)
-{
-    for (language l : all_languages)
-        if (name == to_name(l)) return l;
-    fail("language", "'" + std::string(name) + "' is not a declaration language", "valid: glsl, hlsl, msl, wgsl, cpp");
-}
+// Language -> name; a value outside the enumeration throws aogen::error.
+inline const char* to_name(language l) { return names::name_of(language_table, l, "language"); }
+
+// Name -> language; an unknown name throws aogen::error listing the valid names.
+inline language language_from_name(std::string_view name) { return names::value_of(language_table, name, "language"); }
 
 struct declaration_options {
     uint32_t set = 0;      // descriptor set (GLSL), bind group (WGSL), register space (HLSL)

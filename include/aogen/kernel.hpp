@@ -53,8 +53,10 @@
 
 #include "error.hpp"
 #include "math.hpp"
+#include "names.hpp"
 #include "random.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -68,6 +70,18 @@ inline constexpr int max_count = 256;
 
 enum class distribution { crytek, cosine, hammersley };
 enum class scale_law { crytek, none };
+
+// Their names, for command lines and manifests (see names.hpp; to_name and *_from_name below).
+inline constexpr std::array<enum_name<distribution>, 3> distribution_names{{
+    {distribution::crytek, "crytek"},
+    {distribution::cosine, "cosine"},
+    {distribution::hammersley, "hammersley"},
+}};
+inline constexpr std::array<enum_name<scale_law>, 2> scale_law_names{{
+    {scale_law::crytek, "crytek"},
+    {scale_law::none, "none"},
+}};
+static_assert(names::distinct(distribution_names) && names::distinct(scale_law_names));
 
 namespace detail {
 
@@ -125,9 +139,6 @@ constexpr uint32_t reverse_bits(uint32_t v)
     v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
     return (v >> 16) | (v << 16);
 }
-
-inline std::string valid_distribution_names() { return "valid: crytek, cosine, hammersley"; }
-inline std::string valid_scale_law_names() { return "valid: crytek, none"; }
 
 } // namespace detail
 
@@ -209,55 +220,35 @@ inline std::vector<vec4> hammersley(int count, uint64_t seed, scale_law law = sc
 inline std::vector<vec4> generate(distribution kind, int count, uint64_t seed,
                                   scale_law law = scale_law::crytek)
 {
-    if (law != scale_law::crytek && law != scale_law::none)
-        aogen::fail("kernel scale law", std::to_string(static_cast<int>(law)) + " is not a scale law",
-                    detail::valid_scale_law_names());
+    names::require_listed(scale_law_names, law, "kernel scale law");
     switch (kind) {
     case distribution::crytek: return crytek(count, seed, law);
     case distribution::cosine: return cosine(count, seed, law);
     case distribution::hammersley: return hammersley(count, seed, law);
     }
-    aogen::fail("kernel distribution", std::to_string(static_cast<int>(kind)) + " is not a distribution",
-                detail::valid_distribution_names());
+    names::fail_unlisted(distribution_names, kind, "kernel distribution");
 }
 
 // ---- names, for command lines and manifests ----
 
 inline std::string_view to_name(distribution kind)
 {
-    switch (kind) {
-    case distribution::crytek: return "crytek";
-    case distribution::cosine: return "cosine";
-    case distribution::hammersley: return "hammersley";
-    }
-    aogen::fail("kernel distribution", std::to_string(static_cast<int>(kind)) + " is not a distribution",
-                detail::valid_distribution_names());
+    return names::name_of(distribution_names, kind, "kernel distribution");
 }
 
 inline distribution distribution_from_name(std::string_view name)
 {
-    for (distribution kind : {distribution::crytek, distribution::cosine, distribution::hammersley})
-        if (name == to_name(kind)) return kind;
-    aogen::fail("kernel distribution", "\"" + std::string(name) + "\" is not a known name",
-                detail::valid_distribution_names());
+    return names::value_of(distribution_names, name, "kernel distribution");
 }
 
 inline std::string_view to_name(scale_law law)
 {
-    switch (law) {
-    case scale_law::crytek: return "crytek";
-    case scale_law::none: return "none";
-    }
-    aogen::fail("kernel scale law", std::to_string(static_cast<int>(law)) + " is not a scale law",
-                detail::valid_scale_law_names());
+    return names::name_of(scale_law_names, law, "kernel scale law");
 }
 
 inline scale_law scale_law_from_name(std::string_view name)
 {
-    for (scale_law law : {scale_law::crytek, scale_law::none})
-        if (name == to_name(law)) return law;
-    aogen::fail("kernel scale law", "\"" + std::string(name) + "\" is not a known name",
-                detail::valid_scale_law_names());
+    return names::value_of(scale_law_names, name, "kernel scale law");
 }
 
 } // namespace aogen::kernel

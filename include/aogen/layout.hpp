@@ -42,8 +42,10 @@
 #pragma once
 
 #include "error.hpp"
+#include "names.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <map>
@@ -61,37 +63,30 @@ namespace aogen::layout {
 
 enum class rules { std140, std430, scalar, wgsl_storage, wgsl_uniform, hlsl_cbuffer, msl };
 
-inline constexpr rules all_rules[] = {rules::std140,       rules::std430,       rules::scalar,
-                                      rules::wgsl_storage, rules::wgsl_uniform, rules::hlsl_cbuffer,
-                                      rules::msl};
+// The rule sets' names, as the command line and JSON spell them (see names.hpp; the
+// readers also take '_' for '-': "wgsl_storage").
+inline constexpr std::array<enum_name<rules>, 7> rules_table{{
+    {rules::std140, "std140"},
+    {rules::std430, "std430"},
+    {rules::scalar, "scalar"},
+    {rules::wgsl_storage, "wgsl-storage"},
+    {rules::wgsl_uniform, "wgsl-uniform"},
+    {rules::hlsl_cbuffer, "hlsl-cbuffer"},
+    {rules::msl, "msl"},
+}};
+static_assert(names::distinct(rules_table));
 
-inline const char* to_name(rules r)
-{
-    switch (r) {
-    case rules::std140: return "std140";
-    case rules::std430: return "std430";
-    case rules::scalar: return "scalar";
-    case rules::wgsl_storage: return "wgsl-storage";
-    case rules::wgsl_uniform: return "wgsl-uniform";
-    case rules::hlsl_cbuffer: return "hlsl-cbuffer";
-    case rules::msl: return "msl";
-    }
-    return "?";
-}
+// Every rule set, in table order.
+inline constexpr std::array<rules, rules_table.size()> all_rules = names::values(rules_table);
 
-inline std::string rules_names()
-{
-    std::string names;
-    for (rules r : all_rules) names += (names.empty() ? "" : ", ") + std::string(to_name(r));
-    return names;
-}
+// Rule set -> name; a value outside the enumeration throws aogen::error.
+inline const char* to_name(rules r) { return names::name_of(rules_table, r, "layout rules"); }
 
-inline rules rules_from_name(std::string_view name)
-{
-    for (rules r : all_rules)
-        if (name == to_name(r)) return r;
-    fail("layout rules", "'" + std::string(name) + "' is not a rule set", "valid: " + rules_names());
-}
+// "std140, std430, scalar, wgsl-storage, wgsl-uniform, hlsl-cbuffer, msl".
+inline std::string rules_names() { return names::list(rules_table); }
+
+// Name -> rule set; an unknown name throws aogen::error listing the valid names.
+inline rules rules_from_name(std::string_view name) { return names::value_of(rules_table, name, "layout rules"); }
 
 // Uniform blocks cannot hold a runtime-sized array; storage blocks can.
 inline bool allows_runtime_array(rules r)

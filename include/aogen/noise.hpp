@@ -57,9 +57,11 @@
 #include "error.hpp"
 #include "half.hpp"
 #include "math.hpp"
+#include "names.hpp"
 #include "random.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -84,6 +86,20 @@ struct tile {
 enum class pattern { random, r2 };
 enum class encoding { rgba32f, rgba16f, rg16f, rgba8_unorm, rgba8_snorm };
 
+// Their names, for command lines and manifests (see names.hpp; to_name and *_from_name below).
+inline constexpr std::array<enum_name<pattern>, 2> pattern_names{{
+    {pattern::random, "random"},
+    {pattern::r2, "r2"},
+}};
+inline constexpr std::array<enum_name<encoding>, 5> encoding_names{{
+    {encoding::rgba32f, "rgba32f"},
+    {encoding::rgba16f, "rgba16f"},
+    {encoding::rg16f, "rg16f"},
+    {encoding::rgba8_unorm, "rgba8_unorm"},
+    {encoding::rgba8_snorm, "rgba8_snorm"},
+}};
+static_assert(names::distinct(pattern_names) && names::distinct(encoding_names));
+
 namespace detail {
 
 inline void require_size(int size) { aogen::require_range("noise size", size, min_size, max_size); }
@@ -100,15 +116,6 @@ inline vec4 rotation_texel(double c, double s)
 // fixed-point fractions, rounded to nearest. Wrapping uint64 arithmetic is the "fract".
 inline constexpr uint64_t r2_alpha_x = 0xc13fa9a902a6328full; // 0.75487766624669276005
 inline constexpr uint64_t r2_alpha_y = 0x91e10da5c79e7b1dull; // 0.56984029099805326591
-
-inline std::string valid_pattern_names() { return "valid: random, r2"; }
-inline std::string valid_encoding_names() { return "valid: rgba32f, rgba16f, rg16f, rgba8_unorm, rgba8_snorm"; }
-
-[[noreturn]] inline void fail_encoding(encoding format)
-{
-    aogen::fail("noise encoding", std::to_string(static_cast<int>(format)) + " is not an encoding",
-                valid_encoding_names());
-}
 
 inline void append_u16(std::vector<uint8_t>& out, uint16_t value)
 {
@@ -200,8 +207,7 @@ inline tile generate(pattern kind, int size = default_size, uint64_t seed = 0)
     case pattern::random: return rotations(size, seed);
     case pattern::r2: return r2(size, seed);
     }
-    aogen::fail("noise pattern", std::to_string(static_cast<int>(kind)) + " is not a pattern",
-                detail::valid_pattern_names());
+    names::fail_unlisted(pattern_names, kind, "noise pattern");
 }
 
 // ---- encodings ----
@@ -215,7 +221,7 @@ inline int bytes_per_texel(encoding format)
     case encoding::rgba8_unorm: return 4;
     case encoding::rgba8_snorm: return 4;
     }
-    detail::fail_encoding(format);
+    names::fail_unlisted(encoding_names, format, "noise encoding");
 }
 
 // The matching VkFormat enumerator's name, for manifests and documentation.
@@ -228,7 +234,7 @@ inline std::string_view vulkan_format_name(encoding format)
     case encoding::rgba8_unorm: return "VK_FORMAT_R8G8B8A8_UNORM";
     case encoding::rgba8_snorm: return "VK_FORMAT_R8G8B8A8_SNORM";
     }
-    detail::fail_encoding(format);
+    names::fail_unlisted(encoding_names, format, "noise encoding");
 }
 
 // The matching WebGPU texture format (seed 004 is WGSL).
@@ -241,7 +247,7 @@ inline std::string_view webgpu_format_name(encoding format)
     case encoding::rgba8_unorm: return "rgba8unorm";
     case encoding::rgba8_snorm: return "rgba8snorm";
     }
-    detail::fail_encoding(format);
+    names::fail_unlisted(encoding_names, format, "noise encoding");
 }
 
 // The tile's texels as little-endian bytes in `format`, row by row, no row padding.
@@ -284,41 +290,22 @@ inline std::vector<uint8_t> encode(const tile& noise, encoding format)
 
 inline std::string_view to_name(pattern kind)
 {
-    switch (kind) {
-    case pattern::random: return "random";
-    case pattern::r2: return "r2";
-    }
-    aogen::fail("noise pattern", std::to_string(static_cast<int>(kind)) + " is not a pattern",
-                detail::valid_pattern_names());
+    return names::name_of(pattern_names, kind, "noise pattern");
 }
 
 inline pattern pattern_from_name(std::string_view name)
 {
-    for (pattern kind : {pattern::random, pattern::r2})
-        if (name == to_name(kind)) return kind;
-    aogen::fail("noise pattern", "\"" + std::string(name) + "\" is not a known name",
-                detail::valid_pattern_names());
+    return names::value_of(pattern_names, name, "noise pattern");
 }
 
 inline std::string_view to_name(encoding format)
 {
-    switch (format) {
-    case encoding::rgba32f: return "rgba32f";
-    case encoding::rgba16f: return "rgba16f";
-    case encoding::rg16f: return "rg16f";
-    case encoding::rgba8_unorm: return "rgba8_unorm";
-    case encoding::rgba8_snorm: return "rgba8_snorm";
-    }
-    detail::fail_encoding(format);
+    return names::name_of(encoding_names, format, "noise encoding");
 }
 
 inline encoding encoding_from_name(std::string_view name)
 {
-    for (encoding format : {encoding::rgba32f, encoding::rgba16f, encoding::rg16f,
-                            encoding::rgba8_unorm, encoding::rgba8_snorm})
-        if (name == to_name(format)) return format;
-    aogen::fail("noise encoding", "\"" + std::string(name) + "\" is not a known name",
-                detail::valid_encoding_names());
+    return names::value_of(encoding_names, name, "noise encoding");
 }
 
 } // namespace aogen::noise

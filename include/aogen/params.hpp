@@ -35,6 +35,7 @@
 #pragma once
 
 #include "error.hpp"
+#include "names.hpp"
 
 #include <array>
 #include <cmath>
@@ -84,14 +85,9 @@ inline std::string to_string(const float_range& r)
 // ---------------------------------------------------------------------------------
 //
 // Every enum has a table of canonical names (lower case, '_' between words) used by
-// to_name(), the *_from_name() readers, the command line and JSON. The readers also
-// accept '-' for '_' ("gbuffer-world" as DESIGN.md spells the axis values).
-
-template <class E>
-struct enum_name {
-    E value;
-    const char* name;
-};
+// to_name(), the *_from_name() readers, the command line and JSON, read through
+// names.hpp. The readers also accept '-' for '_' ("gbuffer-world" as DESIGN.md spells
+// the axis values).
 
 // How an SSAO pass turns the occlusion sum into its output.
 enum class ssao_output {
@@ -166,58 +162,11 @@ inline constexpr std::array<enum_name<bilateral_depth>, 2> bilateral_depth_names
     {bilateral_depth::linear, "linear"},
 }};
 
+static_assert(names::distinct(ssao_output_names) && names::distinct(ssao_range_check_names) &&
+              names::distinct(normal_source_names) && names::distinct(blur_mode_names) &&
+              names::distinct(bilateral_depth_names));
+
 namespace detail {
-
-template <class E, std::size_t N>
-std::string list_names(const std::array<enum_name<E>, N>& table)
-{
-    std::string out;
-    for (const auto& entry : table) {
-        if (!out.empty()) out += ", ";
-        out += entry.name;
-    }
-    return out;
-}
-
-template <class E, std::size_t N>
-bool is_listed(const std::array<enum_name<E>, N>& table, E value)
-{
-    for (const auto& entry : table)
-        if (entry.value == value) return true;
-    return false;
-}
-
-// An enum value outside its table: "<subject>: 7 is not a valid value (valid: a, b)".
-template <class E, std::size_t N>
-void require_listed(std::string_view subject, const std::array<enum_name<E>, N>& table,
-                    E value)
-{
-    if (!is_listed(table, value))
-        fail(subject, format_number(static_cast<long long>(value)) + " is not a valid value",
-             "valid: " + list_names(table));
-}
-
-template <class E, std::size_t N>
-const char* name_of(const std::array<enum_name<E>, N>& table, E value, std::string_view subject)
-{
-    for (const auto& entry : table)
-        if (entry.value == value) return entry.name;
-    require_listed(subject, table, value);  // throws
-    return "";
-}
-
-template <class E, std::size_t N>
-E value_of(const std::array<enum_name<E>, N>& table, std::string_view name,
-           std::string_view subject)
-{
-    std::string wanted(name);
-    for (char& c : wanted)
-        if (c == '-') c = '_';
-    for (const auto& entry : table)
-        if (wanted == entry.name) return entry.value;
-    fail(subject, "'" + std::string(name) + "' is not a known name",
-         "valid: " + list_names(table));
-}
 
 inline std::string field(std::string_view prefix, std::string_view name)
 {
@@ -244,33 +193,33 @@ inline void require_in(std::string_view subject, int value, const int_range& r)
 } // namespace detail
 
 // Enum -> canonical name. A value outside the enumeration throws aogen::error.
-inline const char* to_name(ssao_output v) { return detail::name_of(ssao_output_names, v, "ssao_output"); }
-inline const char* to_name(ssao_range_check v) { return detail::name_of(ssao_range_check_names, v, "ssao_range_check"); }
-inline const char* to_name(normal_source v) { return detail::name_of(normal_source_names, v, "normal_source"); }
-inline const char* to_name(blur_mode v) { return detail::name_of(blur_mode_names, v, "blur_mode"); }
-inline const char* to_name(bilateral_depth v) { return detail::name_of(bilateral_depth_names, v, "bilateral_depth"); }
+inline const char* to_name(ssao_output v) { return names::name_of(ssao_output_names, v, "ssao_output"); }
+inline const char* to_name(ssao_range_check v) { return names::name_of(ssao_range_check_names, v, "ssao_range_check"); }
+inline const char* to_name(normal_source v) { return names::name_of(normal_source_names, v, "normal_source"); }
+inline const char* to_name(blur_mode v) { return names::name_of(blur_mode_names, v, "blur_mode"); }
+inline const char* to_name(bilateral_depth v) { return names::name_of(bilateral_depth_names, v, "bilateral_depth"); }
 
 // Name -> enum. An unknown name throws aogen::error listing the valid names; `subject`
 // is what the message names (pass the option or JSON path, e.g. "--blur" or "blur.mode").
 inline ssao_output ssao_output_from_name(std::string_view name, std::string_view subject = "ssao.output")
 {
-    return detail::value_of(ssao_output_names, name, subject);
+    return names::value_of(ssao_output_names, name, subject);
 }
 inline ssao_range_check ssao_range_check_from_name(std::string_view name, std::string_view subject = "ssao.range_check")
 {
-    return detail::value_of(ssao_range_check_names, name, subject);
+    return names::value_of(ssao_range_check_names, name, subject);
 }
 inline normal_source normal_source_from_name(std::string_view name, std::string_view subject = "normals")
 {
-    return detail::value_of(normal_source_names, name, subject);
+    return names::value_of(normal_source_names, name, subject);
 }
 inline blur_mode blur_mode_from_name(std::string_view name, std::string_view subject = "blur.mode")
 {
-    return detail::value_of(blur_mode_names, name, subject);
+    return names::value_of(blur_mode_names, name, subject);
 }
 inline bilateral_depth bilateral_depth_from_name(std::string_view name, std::string_view subject = "blur.depth")
 {
-    return detail::value_of(bilateral_depth_names, name, subject);
+    return names::value_of(bilateral_depth_names, name, subject);
 }
 
 // ---------------------------------------------------------------------------------
@@ -455,11 +404,11 @@ inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
     require_in(field(prefix, "samples"), p.samples, P::samples_range);
     require_in(field(prefix, "radius"), p.radius, P::radius_range);
     require_in(field(prefix, "bias"), p.bias, P::bias_range);
-    detail::require_listed(field(prefix, "output"), ssao_output_names, p.output);
+    names::require_listed(ssao_output_names, p.output, field(prefix, "output"));
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
     require_in(field(prefix, "power"), p.power, P::power_range);
     require_in(field(prefix, "intensity"), p.intensity, P::intensity_range);
-    detail::require_listed(field(prefix, "range_check"), ssao_range_check_names, p.range_check);
+    names::require_listed(ssao_range_check_names, p.range_check, field(prefix, "range_check"));
 
     const auto& len = P::kernel_name_length_range;
     bool well_formed = p.kernel.size() >= static_cast<std::size_t>(len.lo) &&
@@ -472,7 +421,7 @@ inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
                  " characters of a-z, 0-9 and _, e.g. crytek");
 
     require_in(field(prefix, "noise_size"), p.noise_size, P::noise_size_range);
-    detail::require_listed(field(prefix, "normals"), normal_source_names, p.normals);
+    names::require_listed(normal_source_names, p.normals, field(prefix, "normals"));
 }
 
 inline void validate(const gtao_params& p, std::string_view prefix = "gtao")
@@ -485,7 +434,7 @@ inline void validate(const gtao_params& p, std::string_view prefix = "gtao")
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
     require_in(field(prefix, "slices"), p.slices, P::slices_range);
     require_in(field(prefix, "steps"), p.steps, P::steps_range);
-    detail::require_listed(field(prefix, "normals"), normal_source_names, p.normals);
+    names::require_listed(normal_source_names, p.normals, field(prefix, "normals"));
 }
 
 inline void validate(const blur_params& p, std::string_view prefix = "blur")
@@ -493,8 +442,8 @@ inline void validate(const blur_params& p, std::string_view prefix = "blur")
     using detail::field;
     using detail::require_in;
     using P = blur_params;
-    detail::require_listed(field(prefix, "mode"), blur_mode_names, p.mode);
-    detail::require_listed(field(prefix, "depth"), bilateral_depth_names, p.depth);
+    names::require_listed(blur_mode_names, p.mode, field(prefix, "mode"));
+    names::require_listed(bilateral_depth_names, p.depth, field(prefix, "depth"));
     require_in(field(prefix, "raw_depth_k"), p.raw_depth_k, P::raw_depth_k_range);
     require_in(field(prefix, "linear_sharpness"), p.linear_sharpness, P::linear_sharpness_range);
 }

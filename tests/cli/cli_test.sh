@@ -49,7 +49,7 @@ layout_golden)
   ;;
 layout_errors)
   cp "$golden/params.json" "$in/input.json"
-  expect_error "unknown rules" "'std150' is not a rule set.*valid: std140" layout --rules std150 "$in/input.json"
+  expect_error "unknown rules" "layout rules: 'std150' is not a known name \(valid: std140" layout --rules std150 "$in/input.json"
   expect_error "unknown language" "'glsl2'.*valid: glsl, hlsl" layout --rules std140 --emit glsl2 "$in/input.json"
   expect_error "language without its rules" "cannot express std140.*valid rules: hlsl-cbuffer" layout --rules std140 --emit hlsl "$in/input.json"
   expect_error "missing file" "nope.json: cannot be read" layout --rules std140 --out out.json "$in/nope.json"

@@ -251,10 +251,22 @@ TEST_CASE("declare: rule and language names round-trip; unknown names list the v
     for (rules r : all_rules) CHECK(rules_from_name(to_name(r)) == r);
     for (language l : all_languages) CHECK(language_from_name(to_name(l)) == l);
     CHECK(error_of([] { rules_from_name("std150"); }) ==
-          "layout rules: 'std150' is not a rule set (valid: std140, std430, scalar, wgsl-storage, wgsl-uniform, "
+          "layout rules: 'std150' is not a known name (valid: std140, std430, scalar, wgsl-storage, wgsl-uniform, "
           "hlsl-cbuffer, msl)");
     CHECK(error_of([] { language_from_name("spirv"); }) ==
-          "language: 'spirv' is not a declaration language (valid: glsl, hlsl, msl, wgsl, cpp)");
+          "language: 'spirv' is not a known name (valid: glsl, hlsl, msl, wgsl, cpp)");
+    // '-' and '_' are the same character in names; to_name keeps the table's spelling.
+    CHECK(rules_from_name("wgsl_storage") == rules::wgsl_storage);
+    CHECK(rules_from_name("hlsl-cbuffer") == rules::hlsl_cbuffer);
+    CHECK(std::string(to_name(rules::wgsl_uniform)) == "wgsl-uniform");
+    CHECK(rules_names() == "std140, std430, scalar, wgsl-storage, wgsl-uniform, hlsl-cbuffer, msl");
+    CHECK(all_rules.size() == 7);
+    CHECK(all_languages.size() == 5);
+    CHECK(error_of([] { to_name(static_cast<rules>(7)); }) ==
+          "layout rules: 7 is not a valid value (valid: std140, std430, scalar, wgsl-storage, wgsl-uniform, "
+          "hlsl-cbuffer, msl)");
+    CHECK(error_of([] { to_name(static_cast<language>(5)); }) ==
+          "language: 5 is not a valid value (valid: glsl, hlsl, msl, wgsl, cpp)");
 }
 
 // ---------------------------------------------------------------------------------

@@ -196,10 +196,15 @@ TEST_CASE("kernel names round-trip; unknown names list the valid ones", "[kernel
     CHECK(kernel::to_name(kernel::scale_law::none) == "none");
 
     CHECK_THROWS_WITH(kernel::distribution_from_name("Crytek"),
-                      "kernel distribution: \"Crytek\" is not a known name (valid: crytek, cosine, hammersley)");
+                      "kernel distribution: 'Crytek' is not a known name (valid: crytek, cosine, hammersley)");
     CHECK_THROWS_WITH(kernel::scale_law_from_name(""),
-                      "kernel scale law: \"\" is not a known name (valid: crytek, none)");
-    CHECK_THROWS_AS(kernel::generate(static_cast<kernel::distribution>(42), 16, 0), aogen::error);
+                      "kernel scale law: '' is not a known name (valid: crytek, none)");
+    CHECK_THROWS_WITH(kernel::generate(static_cast<kernel::distribution>(42), 16, 0),
+                      "kernel distribution: 42 is not a valid value (valid: crytek, cosine, hammersley)");
+    CHECK_THROWS_WITH(kernel::generate(kernel::distribution::crytek, 16, 0, static_cast<kernel::scale_law>(5)),
+                      "kernel scale law: 5 is not a valid value (valid: crytek, none)");
+    CHECK_THROWS_WITH(kernel::to_name(static_cast<kernel::distribution>(-1)),
+                      "kernel distribution: -1 is not a valid value (valid: crytek, cosine, hammersley)");
 }
 
 TEST_CASE("cosine kernel: directions are cosine-weighted", "[kernel][statistics]")

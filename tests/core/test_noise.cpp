@@ -275,8 +275,13 @@ TEST_CASE("noise names round-trip; unknown names list the valid ones", "[noise]"
     CHECK(noise::vulkan_format_name(noise::encoding::rg16f) == "VK_FORMAT_R16G16_SFLOAT");
     CHECK(noise::vulkan_format_name(noise::encoding::rgba8_snorm) == "VK_FORMAT_R8G8B8A8_SNORM");
     CHECK(noise::webgpu_format_name(noise::encoding::rgba8_unorm) == "rgba8unorm");
-    CHECK_THROWS_WITH(noise::pattern_from_name("blue"), "noise pattern: \"blue\" is not a known name (valid: random, r2)");
+    CHECK_THROWS_WITH(noise::pattern_from_name("blue"), "noise pattern: 'blue' is not a known name (valid: random, r2)");
     CHECK_THROWS_WITH(noise::encoding_from_name("rgba16"),
-                      "noise encoding: \"rgba16\" is not a known name "
+                      "noise encoding: 'rgba16' is not a known name "
                       "(valid: rgba32f, rgba16f, rg16f, rgba8_unorm, rgba8_snorm)");
+    CHECK_THROWS_WITH(noise::encode(noise::rotations(4, 0), static_cast<noise::encoding>(9)),
+                      "noise encoding: 9 is not a valid value "
+                      "(valid: rgba32f, rgba16f, rg16f, rgba8_unorm, rgba8_snorm)");
+    CHECK_THROWS_WITH(noise::generate(static_cast<noise::pattern>(2), 4, 0),
+                      "noise pattern: 2 is not a valid value (valid: random, r2)");
 }
