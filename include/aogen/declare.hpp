@@ -396,7 +396,7 @@ inline std::string declare(const struct_layout& l, language lang, const declarat
     case language::wgsl: return detail::declare_wgsl(l, options);
     case language::cpp: return detail::declare_cpp(l, options);
     }
-    return {};
+    names::fail_unlisted(language_table, lang, "declaration language");
 }
 
 } // namespace aogen::layout
