@@ -13,6 +13,7 @@
 // Blocks:
 //   SsaoUniforms   hemisphere SSAO (seeds 000, 002, 003): camera, kernel[N], settings
 //   GtaoUniforms   GTAO (seed 001): camera and settings; slices and steps are compile-time
+//   BlurUniforms   the bilateral and box blur passes
 //   SsaoUniform    seed 004's block exactly (inv_proj, proj, radius, bias, _pad): 144 bytes
 #pragma once
 
@@ -57,6 +58,15 @@ inline layout::block_desc gtao_block()
     layout::struct_desc s{"GtaoUniforms", camera_members()};
     for (const char* name : {"radius", "thickness_bias", "strength"}) s.members.push_back({name, "float"});
     return {s, {}};
+}
+
+// The blur passes: the inverse projection turns raw depth into view-space depth for the
+// linear depth term; raw_depth_k is the seed-exact term's factor (1000).
+inline layout::block_desc blur_block()
+{
+    return {{"BlurUniforms",
+             {{"inv_proj", "mat4"}, {"texel_size", "vec2"}, {"raw_depth_k", "float"}, {"linear_sharpness", "float"}}},
+            {}};
 }
 
 // Seed 004's SsaoUniform, member for member: 144 bytes under std140 and WGSL's uniform rules.
@@ -112,6 +122,20 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
     w.set("radius", p.radius);
     w.set("thickness_bias", p.thickness_bias);
     w.set("strength", p.strength);
+    return w.bytes();
+}
+
+// BlurUniforms bytes; `target_size` is the AO target's size in pixels.
+inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, vec2 target_size, layout::rules rules)
+{
+    validate(p);
+    require_finite_above("uniforms target width", target_size.x, 0, 65536);
+    require_finite_above("uniforms target height", target_size.y, 0, 65536);
+    layout::writer w(layout::compute(blur_block(), rules));
+    w.set("inv_proj", inverse(proj));
+    w.set("texel_size", vec2{1.0f / target_size.x, 1.0f / target_size.y});
+    w.set("raw_depth_k", p.raw_depth_k);
+    w.set("linear_sharpness", p.linear_sharpness);
     return w.bytes();
 }
 
