@@ -34,6 +34,7 @@
 #include "names.hpp"
 #include "params.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -174,6 +175,164 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
         choice("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth"));
     }
     return d;
+}
+
+// ---------------------------------------------------------------------------------
+// Canonical form, name, hash
+// ---------------------------------------------------------------------------------
+
+// `v` with every field its axes make irrelevant reset to the default (GTAO ignores the
+// SSAO sample count, only the bilateral blur has a depth term, ...), so that two
+// variants that compile to the same shaders compare equal and have one name.
+inline variant canonical(variant v)
+{
+    const variant d;
+    if (v.tech != technique::ssao) {
+        v.ssao_samples = d.ssao_samples, v.range_check = d.range_check, v.output = d.output;
+        v.point_cloud_fallback = d.point_cloud_fallback;
+    }
+    if (v.tech != technique::gtao) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
+    if (v.blur != blur_mode::bilateral) v.blur_depth = d.blur_depth;
+    if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y;
+    return v;
+}
+
+inline bool operator==(const variant& a, const variant& b)
+{
+    const variant x = canonical(a), y = canonical(b);
+    return x.tech == y.tech && x.ssao_samples == y.ssao_samples && x.gtao_slices == y.gtao_slices &&
+           x.gtao_steps == y.gtao_steps && x.blur == y.blur && x.blur_depth == y.blur_depth && x.normals == y.normals &&
+           x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
+           x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
+           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output;
+}
+inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
+
+namespace detail {
+
+// The short spellings of the axes inside a variant name (the tables above hold the
+// long ones used by JSON and the command line).
+inline constexpr std::array<enum_name<blur_mode>, 3> blur_tokens{{
+    {blur_mode::bilateral, "bilateral"}, {blur_mode::box, "box"}, {blur_mode::none, "noblur"}}};
+inline constexpr std::array<enum_name<normal_source>, 3> normal_tokens{{
+    {normal_source::gbuffer_world, "gbufworld"}, {normal_source::gbuffer_view, "gbufview"},
+    {normal_source::reconstructed, "recon"}}};
+inline constexpr std::array<enum_name<depth_convention>, 3> depth_tokens{{
+    {depth_convention::standard, "std"}, {depth_convention::reversed, "rev"},
+    {depth_convention::reversed_infinite, "revinf"}}};
+inline constexpr std::array<enum_name<projection_kind>, 2> projection_tokens{{
+    {projection_kind::perspective, "persp"}, {projection_kind::orthographic, "ortho"}}};
+inline constexpr std::array<enum_name<pipeline_stage>, 2> stage_tokens{{
+    {pipeline_stage::compute, "cs"}, {pipeline_stage::fragment, "fs"}}};
+
+inline std::vector<std::string> split(const std::string& s, char separator)
+{
+    std::vector<std::string> parts(1);
+    for (char c : s) {
+        if (c == separator) parts.emplace_back();
+        else parts.back().push_back(c);
+    }
+    return parts;
+}
+
+// A decimal integer token in [lo, hi] after `prefix` ("s16" → 16); -1 when it is not one.
+inline int parse_count(const std::string& token, size_t from = 0)
+{
+    if (token.size() <= from || token.size() - from > 3) return -1;
+    int value = 0;
+    for (size_t i = from; i < token.size(); ++i) {
+        if (token[i] < '0' || token[i] > '9') return -1;
+        value = value * 10 + (token[i] - '0');
+    }
+    return value;
+}
+
+} // namespace detail
+
+// The canonical name: "ssao-s16-half-bilateral-gbufworld-std-persp-cs" and extras.
+inline std::string to_name(const variant& input)
+{
+    validate(input);
+    const variant v = canonical(input);
+    const variant d;
+    std::string name = names::name_of(technique_names, v.tech, "technique");
+    if (v.tech == technique::ssao) name += "-s" + std::to_string(v.ssao_samples);
+    else name += "-" + std::to_string(v.gtao_slices) + "x" + std::to_string(v.gtao_steps);
+    name += v.half_resolution ? "-half" : "-full";
+    name += std::string("-") + names::name_of(detail::blur_tokens, v.blur, "blur");
+    name += std::string("-") + names::name_of(detail::normal_tokens, v.normals, "normals");
+    name += std::string("-") + names::name_of(detail::depth_tokens, v.depth, "depth");
+    name += std::string("-") + names::name_of(detail::projection_tokens, v.projection, "projection");
+    name += std::string("-") + names::name_of(detail::stage_tokens, v.stage, "stage");
+    if (v.blur_depth != d.blur_depth) name += "-rawdepth";
+    if (v.point_cloud_fallback) name += "-pc";
+    if (v.range_check != d.range_check) name += "-rc004";
+    if (v.output != d.output) name += "-powint";
+    if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
+        name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
+    return name;
+}
+
+// Parses a name written by to_name (extras in any order, each at most once).
+inline variant variant_from_name(const std::string& name)
+{
+    const std::string subject = "variant name '" + name + "'";
+    const std::vector<std::string> t = detail::split(name, '-');
+    const char* layout_help =
+        "valid: ssao-s<N>|gtao-<slices>x<steps>, half|full, bilateral|box|noblur, gbufworld|gbufview|recon, "
+        "std|rev|revinf, persp|ortho, cs|fs, then rawdepth, pc, rc004, powint, wg<X>x<Y>";
+    if (t.size() < 8) fail(subject, "has " + std::to_string(t.size()) + " tokens, too few", layout_help);
+    variant v;
+    v.tech = names::value_of(technique_names, t[0], subject + " technique");
+    if (v.tech == technique::ssao) {
+        if (t[1].size() < 2 || t[1][0] != 's' || (v.ssao_samples = detail::parse_count(t[1], 1)) < 0)
+            fail(subject, "'" + t[1] + "' is not a sample count", "valid: s1..s256");
+    } else {
+        const std::vector<std::string> ss = detail::split(t[1], 'x');
+        if (ss.size() != 2 || (v.gtao_slices = detail::parse_count(ss[0])) < 0 || (v.gtao_steps = detail::parse_count(ss[1])) < 0)
+            fail(subject, "'" + t[1] + "' is not slices x steps", "valid: e.g. 2x3, each 1..16");
+    }
+    if (t[2] != "half" && t[2] != "full") fail(subject + " resolution", "'" + t[2] + "' is not a resolution", "valid: half, full");
+    v.half_resolution = t[2] == "half";
+    v.blur = names::value_of(detail::blur_tokens, t[3], subject + " blur");
+    v.normals = names::value_of(detail::normal_tokens, t[4], subject + " normals");
+    v.depth = names::value_of(detail::depth_tokens, t[5], subject + " depth");
+    v.projection = names::value_of(detail::projection_tokens, t[6], subject + " projection");
+    v.stage = names::value_of(detail::stage_tokens, t[7], subject + " stage");
+    std::vector<std::string> seen;
+    for (size_t i = 8; i < t.size(); ++i) {
+        const std::string& x = t[i];
+        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x;
+        if (std::find(seen.begin(), seen.end(), kind) != seen.end()) fail(subject, "'" + x + "' appears twice", "valid: each extra once");
+        seen.push_back(kind);
+        if (x == "rawdepth") v.blur_depth = bilateral_depth::seed_raw;
+        else if (x == "pc") v.point_cloud_fallback = true;
+        else if (x == "rc004") v.range_check = ssao_range_check::seed004;
+        else if (x == "powint") v.output = ssao_output::power_intensity;
+        else if (kind == "wg") {
+            const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
+            if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
+                fail(subject, "'" + x + "' is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
+        } else fail(subject, "'" + x + "' is not a known extra", "valid: rawdepth, pc, rc004, powint, wg<X>x<Y>");
+    }
+    try {
+        validate(v);
+    } catch (const error& e) {
+        fail(subject, e.what(), "");
+    }
+    if (to_name(v) != name) fail(subject, "is not in canonical form", "valid: " + to_name(v));
+    return canonical(v);
+}
+
+// A stable 64-bit hash of the variant: FNV-1a of its canonical name, as 16 hex digits.
+inline std::string hash(const variant& v)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (char c : to_name(v)) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+    static const char digits[] = "0123456789abcdef";
+    std::string out(16, '0');
+    for (int i = 15; i >= 0; --i, h >>= 4) out[i] = digits[h & 15];
+    return out;
 }
 
 } // namespace aogen

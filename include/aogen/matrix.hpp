@@ -1,0 +1,115 @@
+// aogen/matrix.hpp — sets of variants: the cartesian product of axis values.
+//
+// WHAT
+//   A matrix lists, per axis, the values to combine; expand() returns every
+//   combination as a canonical variant, in a fixed order, without duplicates (axes a
+//   technique ignores collapse: GTAO × four SSAO sample counts is one GTAO variant).
+//   default_matrix() is the set `aogen generate` builds when no variant is named:
+//     SSAO 8/16/32/64 samples × blur bilateral/box/none × full/half, compute;
+//     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/none, compute;
+//     and the seeds' own configurations as fragment variants (Taos SSAO, Taos GTAO,
+//     Unique Engine SSAO, the point-cloud viewer's ssao.wgsl).
+//
+// USAGE
+//     aogen::variant_matrix m;                  // one value per axis: the default variant
+//     m.ssao_samples = {8, 16};
+//     m.blur = {aogen::blur_mode::box, aogen::blur_mode::none};
+//     std::vector<aogen::variant> vs = aogen::expand(m);   // 4 variants
+#pragma once
+
+#include "variant.hpp"
+
+#include <vector>
+
+namespace aogen {
+
+struct variant_matrix {
+    std::vector<technique> techniques{technique::ssao};
+    std::vector<int> ssao_samples{16};
+    std::vector<int> gtao_slices{2};
+    std::vector<int> gtao_steps{3};
+    std::vector<blur_mode> blur{blur_mode::bilateral};
+    std::vector<bilateral_depth> blur_depth{bilateral_depth::linear};
+    std::vector<normal_source> normals{normal_source::gbuffer_world};
+    std::vector<bool> point_cloud_fallback{false};
+    std::vector<depth_convention> depth{depth_convention::standard};
+    std::vector<projection_kind> projection{projection_kind::perspective};
+    std::vector<bool> half_resolution{true};
+    std::vector<pipeline_stage> stage{pipeline_stage::compute};
+    std::vector<ssao_range_check> range_check{ssao_range_check::taos};
+    std::vector<ssao_output> output{ssao_output::strength};
+};
+
+namespace detail {
+
+inline void add_unique(std::vector<variant>& out, const variant& v)
+{
+    const variant c = canonical(v);
+    for (const variant& existing : out)
+        if (existing == c) return;
+    out.push_back(c);
+}
+
+} // namespace detail
+
+// Every combination, technique-major, in the order the axes' values are listed.
+// Combinations that are invalid (a point-cloud fallback with GTAO) are skipped.
+inline std::vector<variant> expand(const variant_matrix& m)
+{
+    std::vector<variant> out;
+    variant v;
+    for (technique t : m.techniques)
+    for (int samples : m.ssao_samples)
+    for (int slices : m.gtao_slices)
+    for (int steps : m.gtao_steps)
+    for (blur_mode blur : m.blur)
+    for (bilateral_depth bd : m.blur_depth)
+    for (normal_source n : m.normals)
+    for (bool pc : m.point_cloud_fallback)
+    for (depth_convention d : m.depth)
+    for (projection_kind p : m.projection)
+    for (bool half : m.half_resolution)
+    for (pipeline_stage stage : m.stage)
+    for (ssao_range_check rc : m.range_check)
+    for (ssao_output o : m.output) {
+        v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
+        v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
+        v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
+        v.range_check = rc, v.output = o;
+        if (pc && t != technique::ssao) continue;
+        validate(v);
+        detail::add_unique(out, v);
+    }
+    return out;
+}
+
+// The seeds' own configurations, as the fragment variants their engines run.
+inline std::vector<variant> seed_variants()
+{
+    return {
+        variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth"),     // Taos SSAOPass
+        variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-fs-rawdepth"),     // Taos GTAOPass
+        variant_from_name("ssao-s32-half-bilateral-gbufview-std-persp-fs-powint"),        // Unique Engine UeSSAOPass
+        variant_from_name("ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004"),            // point-cloud ssao.wgsl
+    };
+}
+
+inline std::vector<variant> default_matrix()
+{
+    const std::vector<blur_mode> all_blurs{blur_mode::bilateral, blur_mode::box, blur_mode::none};
+    variant_matrix ssao;
+    ssao.ssao_samples = {8, 16, 32, 64};
+    ssao.blur = all_blurs;
+    ssao.half_resolution = {false, true};
+    variant_matrix gtao;
+    gtao.techniques = {technique::gtao};
+    gtao.gtao_slices = {1, 2, 3, 4, 8};
+    gtao.gtao_steps = {2, 3, 4};
+    gtao.blur = all_blurs;
+    std::vector<variant> out = expand(ssao);
+    for (const variant& v : expand(gtao)) detail::add_unique(out, v);
+    for (const variant& v : seed_variants()) detail::add_unique(out, v);
+    return out;
+}
+
+} // namespace aogen

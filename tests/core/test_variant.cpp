@@ -1,0 +1,181 @@
+// Variants: names round-trip and are unique per distinct variant, invalid names and
+// values are errors naming the axis, defines follow the contract the templates read,
+// scene selection leaves out what the scene does not need, and the default matrix is
+// the set.
+#include <aogen/matrix.hpp>
+#include <aogen/selection.hpp>
+#include <aogen/variant.hpp>
+
+#include <catch2/catch.hpp>
+
+#include "support.hpp"
+
+#include <set>
+
+using namespace aogen;
+using aogen_test::error_of;
+using Catch::Contains;
+
+namespace {
+
+// Many variants: every choice axis with two sample counts and two slice/step counts.
+std::vector<variant> broad_set()
+{
+    variant_matrix m;
+    m.techniques = {technique::ssao, technique::gtao};
+    m.ssao_samples = {1, 256};
+    m.gtao_slices = {1, 16};
+    m.gtao_steps = {16};
+    m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::none};
+    m.blur_depth = {bilateral_depth::linear, bilateral_depth::seed_raw};
+    m.normals = {normal_source::gbuffer_world, normal_source::gbuffer_view, normal_source::reconstructed};
+    m.point_cloud_fallback = {false, true};
+    m.depth = {depth_convention::standard, depth_convention::reversed, depth_convention::reversed_infinite};
+    m.projection = {projection_kind::perspective, projection_kind::orthographic};
+    m.half_resolution = {false, true};
+    m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
+    m.range_check = {ssao_range_check::taos, ssao_range_check::seed004};
+    m.output = {ssao_output::strength, ssao_output::power_intensity};
+    return expand(m);
+}
+
+} // namespace
+
+TEST_CASE("variant: the default's name is the one DESIGN.md spells", "[variant]")
+{
+    CHECK(to_name(variant{}) == "ssao-s16-half-bilateral-gbufworld-std-persp-cs");
+    variant v;
+    v.tech = technique::gtao;
+    v.stage = pipeline_stage::fragment;
+    v.blur = blur_mode::box;
+    CHECK(to_name(v) == "gtao-2x3-half-box-gbufworld-std-persp-fs");
+}
+
+TEST_CASE("variant: every name parses back into the same variant, and names are unique", "[variant]")
+{
+    const std::vector<variant> all = broad_set();
+    REQUIRE(all.size() > 2000);
+    std::set<std::string> names, hashes;
+    for (const variant& v : all) {
+        const std::string name = to_name(v);
+        INFO(name);
+        CHECK(variant_from_name(name) == v);
+        CHECK(to_name(variant_from_name(name)) == name);
+        names.insert(name);
+        hashes.insert(hash(v));
+    }
+    CHECK(names.size() == all.size());  // expand() returned distinct variants: distinct names
+    CHECK(hashes.size() == all.size());
+}
+
+TEST_CASE("variant: canonical form ignores the axes a technique does not use", "[variant]")
+{
+    variant a, b;
+    a.tech = b.tech = technique::gtao;
+    b.ssao_samples = 64;
+    b.blur_depth = bilateral_depth::seed_raw; // bilateral is on: this one counts
+    CHECK(a != b);
+    a.blur_depth = bilateral_depth::seed_raw;
+    CHECK(a == b);
+    CHECK(to_name(a) == to_name(b));
+    variant c;
+    c.blur = blur_mode::none;
+    c.blur_depth = bilateral_depth::seed_raw;  // no bilateral blur: irrelevant
+    CHECK(to_name(c) == "ssao-s16-half-noblur-gbufworld-std-persp-cs");
+}
+
+TEST_CASE("variant: invalid names name the token and the valid values", "[variant][errors]")
+{
+    CHECK_THAT(error_of([] { variant_from_name("ssao-s16-half-blurry-gbufworld-std-persp-cs"); }),
+               Contains("'blurry' is not a known name") && Contains("bilateral, box, noblur"));
+    CHECK_THAT(error_of([] { variant_from_name("ssao-s0-half-bilateral-gbufworld-std-persp-cs"); }),
+               Contains("ssao samples: 0 is out of range (valid: 1..256)"));
+    CHECK_THAT(error_of([] { variant_from_name("hbao-s16-half-bilateral-gbufworld-std-persp-cs"); }),
+               Contains("'hbao' is not a known name (valid: ssao, gtao)"));
+    CHECK_THAT(error_of([] { variant_from_name("gtao-2x17-half-bilateral-gbufworld-std-persp-cs"); }),
+               Contains("gtao steps: 17 is out of range (valid: 1..16)"));
+    CHECK_THAT(error_of([] { variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-fast"); }),
+               Contains("'fast' is not a known extra"));
+    CHECK_THAT(error_of([] { variant_from_name("ssao-s16-half"); }), Contains("too few"));
+    CHECK_THAT(error_of([] { variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-wg8x8"); }),
+               Contains("not in canonical form") && Contains("valid: ssao-s16-half-bilateral-gbufworld-std-persp-cs"));
+    CHECK_THAT(error_of([] { variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-pc"); }),
+               Contains("point-cloud fallback"));
+    variant v;
+    v.workgroup_x = 64;
+    CHECK_THAT(error_of([&] { validate(v); }), Contains("workgroup x: 64 is out of range (valid: 1..32)"));
+    v.workgroup_x = 32, v.workgroup_y = 32;
+    CHECK_NOTHROW(validate(v));
+    v.blur = static_cast<blur_mode>(9);
+    CHECK_THAT(error_of([&] { validate(v); }), Contains("blur: 9 is not a valid value"));
+}
+
+TEST_CASE("variant: each pass gets exactly one define per choice axis", "[variant]")
+{
+    for (const variant& v : broad_set()) {
+        for (pass_kind pass : passes(v)) {
+            std::set<std::string> groups;
+            for (const define& d : defines(v, pass)) {
+                INFO(to_name(v) << " " << d.name);
+                const std::string group = d.name.substr(0, d.name.find('_', 3));
+                if (d.value.empty() && d.name != "AO_HALF_RESOLUTION" && d.name != "AO_POINT_CLOUD_FALLBACK")
+                    CHECK(groups.insert(group).second);
+            }
+        }
+    }
+    const std::vector<define> ao = defines(variant_from_name("ssao-s32-half-bilateral-recon-rev-ortho-cs-pc"), pass_kind::ao);
+    auto has = [&](const char* name, const char* value) {
+        for (const define& d : ao)
+            if (d.name == name) return d.value == value;
+        return false;
+    };
+    CHECK(has("AO_SSAO_SAMPLES", "32"));
+    CHECK(has("AO_NORMALS_RECONSTRUCTED", ""));
+    CHECK(has("AO_DEPTH_REVERSED", ""));
+    CHECK(has("AO_PROJECTION_ORTHOGRAPHIC", ""));
+    CHECK(has("AO_POINT_CLOUD_FALLBACK", ""));
+    CHECK(has("AO_WORKGROUP_X", "8"));
+    CHECK(passes(variant{}) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_x, pass_kind::blur_y});
+}
+
+TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and says why", "[variant][selection]")
+{
+    variant base = variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-pc");
+    scene_needs scene;
+    const selection s = select(base, scene);
+    CHECK_FALSE(s.v.point_cloud_fallback);
+    bool found = false;
+    for (const left_out_feature& f : s.features.left_out)
+        if (f.feature == "point-cloud fallback") found = f.why == "the scene has no point clouds";
+    CHECK(found);
+
+    scene.normals = normal_source::reconstructed;
+    scene.point_clouds = true;
+    scene.depth = depth_convention::reversed_infinite;
+    scene.blur = blur_mode::none;
+    scene.half_resolution_ok = false;
+    const selection t = select(variant{}, scene);
+    CHECK(to_name(t.v) == "ssao-s16-full-noblur-recon-revinf-persp-cs-pc");
+    std::set<std::string> left;
+    for (const left_out_feature& f : t.features.left_out) left.insert(f.feature);
+    CHECK(left.count("normal buffer input"));
+    CHECK(left.count("bilateral blur"));
+    CHECK(left.count("box blur"));
+    CHECK_FALSE(left.count("point-cloud fallback"));
+}
+
+TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
+{
+    const std::vector<variant> m = default_matrix();
+    CHECK(m.size() == 24 + 45 + 4);
+    int ssao_cs = 0, gtao_cs = 0, fs = 0;
+    for (const variant& v : m) {
+        if (v.stage == pipeline_stage::fragment) ++fs;
+        else if (v.tech == technique::ssao) ++ssao_cs;
+        else ++gtao_cs;
+    }
+    CHECK(ssao_cs == 24);
+    CHECK(gtao_cs == 45);
+    CHECK(fs == 4);
+    CHECK(to_name(m.front()) == "ssao-s8-full-bilateral-gbufworld-std-persp-cs");
+}
