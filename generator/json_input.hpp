@@ -62,12 +62,7 @@ public:
 
     json_reader at(size_t index) const { return json_reader((*value_)[index], path_ + "[" + std::to_string(index) + "]"); }
 
-    std::string string(const char* key) const
-    {
-        const json_reader f = field(key);
-        if (!f.value_->is_string()) fail(f.path_, "is " + f.kind() + ", not a string", "valid: \"...\"");
-        return f.value_->get<std::string>();
-    }
+    std::string string(const char* key) const { return field(key).as_string(); }
 
     json_reader array(const char* key) const
     {
@@ -76,17 +71,26 @@ public:
         return f;
     }
 
-    uint32_t unsigned_integer(const char* key, uint32_t lo, uint32_t hi) const
+    uint32_t unsigned_integer(const char* key, uint32_t lo, uint32_t hi) const { return field(key).as_unsigned(lo, hi); }
+
+    // This value as an integer in [lo, hi].
+    uint32_t as_unsigned(uint32_t lo, uint32_t hi) const
     {
-        const json_reader f = field(key);
         const std::string valid = "valid: an integer " + std::to_string(lo) + ".." + std::to_string(hi);
-        if (!f.value_->is_number_integer()) fail(f.path_, f.value_->dump() + " is not an integer", valid);
-        if (f.value_->is_number_unsigned()) {
-            const uint64_t v = f.value_->get<uint64_t>();
-            if (v < lo || v > hi) fail(f.path_, std::to_string(v) + " is out of range", valid);
+        if (!value_->is_number_integer()) fail(path_, value_->dump() + " is not an integer", valid);
+        if (value_->is_number_unsigned()) {
+            const uint64_t v = value_->get<uint64_t>();
+            if (v < lo || v > hi) fail(path_, std::to_string(v) + " is out of range", valid);
             return static_cast<uint32_t>(v);
         }
-        fail(f.path_, f.value_->dump() + " is out of range", valid);
+        fail(path_, value_->dump() + " is out of range", valid);
+    }
+
+    // This value as a string.
+    std::string as_string() const
+    {
+        if (!value_->is_string()) fail(path_, "is " + kind() + ", not a string", "valid: \"...\"");
+        return value_->get<std::string>();
     }
 
     double number(const char* key) const

@@ -4,11 +4,13 @@
 //   aogen kernel  --kind crytek|cosine|hammersley --count N --seed S --format json|cpp|glsl|wgsl|bin
 //   aogen noise   --size N --seed S --pattern P --encoding E --format json|cpp|bin
 //   aogen seeds   --out DIR     the seeds' default configurations' data, written to DIR
+//   aogen list    [--variants]  the variant axes and their values, or the default matrix
 //
 // Every failure is one line on stderr ("aogen: <what>: <problem> (<valid>)") and a
 // non-zero exit; files are written whole or not at all. `aogen <command> --help` says more.
 #include "cmd_kernel.hpp"
 #include "cmd_layout.hpp"
+#include "cmd_list.hpp"
 #include "cmd_noise.hpp"
 #include "cmd_seeds.hpp"
 
@@ -26,10 +28,12 @@ int main(int argc, char** argv)
     aogen::cli::kernel_command kernel;
     aogen::cli::noise_command noise;
     aogen::cli::seeds_command seeds;
+    aogen::cli::list_command list;
     layout.add_to(app);
     kernel.add_to(app);
     noise.add_to(app);
     seeds.add_to(app);
+    list.add_to(app);
 
     try {
         app.parse(argc, argv);

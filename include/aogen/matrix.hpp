@@ -40,17 +40,14 @@ struct variant_matrix {
     std::vector<ssao_output> output{ssao_output::strength};
 };
 
-namespace detail {
-
-inline void add_unique(std::vector<variant>& out, const variant& v)
+// Appends canonical(v) unless an equal variant is already in `out`.
+inline void append_unique(std::vector<variant>& out, const variant& v)
 {
     const variant c = canonical(v);
     for (const variant& existing : out)
         if (existing == c) return;
     out.push_back(c);
 }
-
-} // namespace detail
 
 // Every combination, technique-major, in the order the axes' values are listed.
 // Combinations that are invalid (a point-cloud fallback with GTAO) are skipped.
@@ -78,7 +75,7 @@ inline std::vector<variant> expand(const variant_matrix& m)
         v.range_check = rc, v.output = o;
         if (pc && t != technique::ssao) continue;
         validate(v);
-        detail::add_unique(out, v);
+        append_unique(out, v);
     }
     return out;
 }
@@ -107,8 +104,8 @@ inline std::vector<variant> default_matrix()
     gtao.gtao_steps = {2, 3, 4};
     gtao.blur = all_blurs;
     std::vector<variant> out = expand(ssao);
-    for (const variant& v : expand(gtao)) detail::add_unique(out, v);
-    for (const variant& v : seed_variants()) detail::add_unique(out, v);
+    for (const variant& v : expand(gtao)) append_unique(out, v);
+    for (const variant& v : seed_variants()) append_unique(out, v);
     return out;
 }
 
