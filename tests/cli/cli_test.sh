@@ -35,7 +35,7 @@ expect_error() {
 
 case $case in
 help)
-  for sub in "" layout kernel noise seeds; do
+  for sub in "" layout kernel noise seeds list; do
     check "aogen $sub --help" bash -c "'$aogen' $sub --help | grep -q Usage"
   done
   expect_error "no command" "A subcommand is required|subcommand"
@@ -117,6 +117,15 @@ seeds)
   for f in "$work"/seeds/*/uniforms.std430.hpp; do
     check "$f compiles" c++ -std=c++17 -fsyntax-only -x c++ "$f"
   done
+  ;;
+list)
+  "$aogen" list >"$work/axes.txt"
+  check "axes list the default variant" grep -q "^default variant: ssao-s16-half-bilateral-gbufworld-std-persp-cs$" "$work/axes.txt"
+  check "axes list every depth convention" grep -q "standard, reversed, reversed_infinite" "$work/axes.txt"
+  "$aogen" list --variants >"$work/variants.txt"
+  check "the default matrix has 73 variants" test "$(wc -l <"$work/variants.txt")" -eq 73
+  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 73
+  check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004" "$work/variants.txt"
   ;;
 *) echo "unknown case $case"; exit 2 ;;
 esac
