@@ -1,6 +1,8 @@
 // The smallest engine-side use of aogen::core: build the SSAO pass's data — a kernel,
-// a noise tile and the uniform block as std140 bytes — and print its GLSL declaration.
+// a noise tile and the uniform block as std140 bytes — and print its GLSL declaration;
+// then generate the default variant's GLSL from the templates embedded in the package.
 // Exits non-zero if the installed headers disagree with what the seeds specify.
+#include <aogen/codegen.hpp>
 #include <aogen/declare.hpp>
 #include <aogen/kernel.hpp>
 #include <aogen/noise.hpp>
@@ -24,5 +26,10 @@ int main()
                 bytes.size());
     const bool seed_block_ok =
         aogen::layout::compute(aogen::uniforms::pointcloud_block(), aogen::layout::rules::wgsl_uniform).size == 144;
-    return kernel.size() == 16 && noise.size() == 64 && bytes.size() == layout.size && seed_block_ok ? 0 : 1;
+    const auto shaders = aogen::codegen::generate(aogen::variant{}); // ao, blur_x, blur_y
+    std::printf("%s: %zu shaders, %zu bytes of GLSL in the first\n", shaders.at(0).name.c_str(), shaders.size(),
+                shaders.at(0).glsl.size());
+    const bool codegen_ok = aogen::codegen::have_embedded_templates() && shaders.size() == 3 &&
+                            shaders[0].glsl.find("#line 1 \"ssao.glsl\"") != std::string::npos;
+    return kernel.size() == 16 && noise.size() == 64 && bytes.size() == layout.size && seed_block_ok && codegen_ok ? 0 : 1;
 }

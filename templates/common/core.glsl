@@ -1,0 +1,76 @@
+// common/core.glsl -- what every aogen pass shares: the #define contract, constants and
+// numeric guards.
+//
+// aogen's codegen (include/aogen/codegen.hpp) writes, before this file: `#version 450`,
+// the pass's #defines (aogen::defines(variant, pass) in aogen/variant.hpp), the binding
+// numbers (AO_BINDING_*) and constants taken from aogen's headers (AO_BLUR_*, AO_PC_*),
+// and the declaration of the pass's uniform block, instance `u`, made from
+// aogen/uniforms.hpp by aogen::layout::declare (std140, set 0, binding 0). The template
+// files follow in a fixed order; none of them declares the uniform block.
+//
+// Conventions (aogen/math.hpp): right-handed view space, the camera looks down -z, clip
+// y up, uv.y = 0.5 - 0.5 * ndc.y (uv (0, 0) is the top-left texel of every texture);
+// depth in [0, 1] as AO_DEPTH_STANDARD (near 0, far 1), AO_DEPTH_REVERSED (near 1, far 0)
+// or AO_DEPTH_REVERSED_INFINITE (depth = near / distance).
+//
+// Every pass writes a value that is finite and in [0, 1], 1 meaning "not occluded";
+// background pixels get exactly 1.
+
+// ---- the #define contract (exactly one value of each choice) -------------------------
+#if (defined(AO_STAGE_COMPUTE) + defined(AO_STAGE_FRAGMENT)) != 1
+#error aogen: define exactly one of AO_STAGE_COMPUTE AO_STAGE_FRAGMENT
+#endif
+#if defined(AO_STAGE_COMPUTE) && !(defined(AO_WORKGROUP_X) && defined(AO_WORKGROUP_Y))
+#error aogen: a compute pass needs AO_WORKGROUP_X and AO_WORKGROUP_Y
+#endif
+#if (defined(AO_DEPTH_STANDARD) + defined(AO_DEPTH_REVERSED) + defined(AO_DEPTH_REVERSED_INFINITE)) != 1
+#error aogen: define exactly one of AO_DEPTH_STANDARD AO_DEPTH_REVERSED AO_DEPTH_REVERSED_INFINITE
+#endif
+#if (defined(AO_PROJECTION_PERSPECTIVE) + defined(AO_PROJECTION_ORTHOGRAPHIC)) != 1
+#error aogen: define exactly one of AO_PROJECTION_PERSPECTIVE AO_PROJECTION_ORTHOGRAPHIC
+#endif
+#if (defined(AO_PASS_AO) + defined(AO_PASS_BLUR_X) + defined(AO_PASS_BLUR_Y) + defined(AO_PASS_BLUR_BOX)) != 1
+#error aogen: define exactly one of AO_PASS_AO AO_PASS_BLUR_X AO_PASS_BLUR_Y AO_PASS_BLUR_BOX
+#endif
+#if !defined(AO_BINDING_DEPTH)
+#error aogen: AO_BINDING_DEPTH is not defined (codegen writes the bindings)
+#endif
+#if defined(AO_STAGE_COMPUTE) && !defined(AO_BINDING_OUTPUT)
+#error aogen: AO_BINDING_OUTPUT is not defined (codegen writes the bindings)
+#endif
+
+// ---- constants --------------------------------------------------------------------------
+const float AO_PI = 3.14159265358979;
+const float AO_HALF_PI = 1.57079632679490;
+
+// ---- numeric guards -----------------------------------------------------------------------
+
+// False for NaN and +-infinity. A test of the exponent bits rather than isnan/isinf, which
+// a driver compiling with fast-math may assume false and remove.
+bool ao_is_finite(float x)
+{
+    return (floatBitsToUint(x) & 0x7f800000u) != 0x7f800000u;
+}
+
+bool ao_is_finite(vec3 v)
+{
+    return ao_is_finite(v.x) && ao_is_finite(v.y) && ao_is_finite(v.z);
+}
+
+// `v` scaled to unit length, or `fallback` when v is zero, tiny or not finite. v is first
+// divided by its largest component, so the dot product neither overflows nor underflows.
+vec3 ao_safe_normalize(vec3 v, vec3 fallback)
+{
+    if (!ao_is_finite(v)) return fallback;
+    float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
+    if (!(m > 1e-30)) return fallback;
+    v /= m;
+    return v * inversesqrt(dot(v, v)); // dot(v, v) is in [1, 3]
+}
+
+// What a pass writes: finite and in [0, 1]. Anything else (a NaN from input the guards
+// did not foresee) becomes 1, no occlusion.
+float ao_finalize(float ao)
+{
+    return ao_is_finite(ao) ? clamp(ao, 0.0, 1.0) : 1.0;
+}

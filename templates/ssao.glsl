@@ -1,0 +1,113 @@
+// ssao.glsl -- hemisphere SSAO (Crytek style), as Taos' SSAOPass (seeds 000, 002),
+// Unique Engine's UeSSAOPass (seed 003) and the point-cloud viewer's ssao.wgsl (seed 004)
+// describe it. Uniform block: SsaoUniforms (u.proj, u.inv_proj, u.world_to_view,
+// u.radius, u.bias, u.strength, u.power, u.intensity, u.kernel[AO_SSAO_SAMPLES]).
+//
+// Per pixel: reconstruct the view-space position P; take the normal n (normals.glsl);
+// build a tangent frame around n, rotated by the pixel's noise vector (Gram-Schmidt);
+// for each kernel sample (a point of the unit hemisphere around +z):
+//   S = P + TBN * kernel[i].xyz * radius, projected to the screen with u.proj;
+//   samples behind the camera or projecting off screen are skipped (they count as
+//   unoccluded: the sum is still divided by all AO_SSAO_SAMPLES, as the seeds do), and
+//   so are samples landing on background;
+//   the sample is occluded when the scene's view z at its pixel is > S.z + bias (the
+//   visible surface is closer to the camera than the sample: the sample is inside
+//   geometry). Comparing with the sample's z, not the pixel's, keeps the bias
+//   slope-invariant on flat surfaces;
+//   an occluded sample counts with the range-check weight of |dz| = |P.z - scene z|:
+//     AO_RANGE_CHECK_TAOS     1 - smoothstep(0, radius, |dz|)   (0 from |dz| = radius on)
+//     AO_RANGE_CHECK_SEED004  smoothstep(0, 1, radius / |dz|)   (1 while |dz| <= radius,
+//                                                               so |dz| = 0 divides nothing)
+// Output, with occ the weighted count and N = AO_SSAO_SAMPLES:
+//   AO_OUTPUT_STRENGTH         clamp(1 - occ / N * strength, 0, 1)            (seeds 000, 004)
+//   AO_OUTPUT_POWER_INTENSITY  clamp(mix(1, pow(max(1 - occ / N, 0), power), intensity), 0, 1)
+//                                                                              (seed 003)
+// With AO_POINT_CLOUD_FALLBACK (seed 004), ssao_point_cloud.glsl comes before this file
+// and billboard-interior pixels take its depth-cavity test instead.
+
+#if !defined(AO_PASS_AO) || !defined(AO_TECHNIQUE_SSAO)
+#error aogen: ssao.glsl is the AO pass of the ssao technique
+#endif
+#if !defined(AO_SSAO_SAMPLES)
+#error aogen: ssao.glsl needs AO_SSAO_SAMPLES
+#endif
+#if (defined(AO_RANGE_CHECK_TAOS) + defined(AO_RANGE_CHECK_SEED004)) != 1
+#error aogen: define exactly one of AO_RANGE_CHECK_TAOS AO_RANGE_CHECK_SEED004
+#endif
+#if (defined(AO_OUTPUT_STRENGTH) + defined(AO_OUTPUT_POWER_INTENSITY)) != 1
+#error aogen: define exactly one of AO_OUTPUT_STRENGTH AO_OUTPUT_POWER_INTENSITY
+#endif
+
+// The tangent frame (columns t, b, n) around unit normal n, its tangent the part of the
+// noise vector (r, 0) perpendicular to n. When (r, 0) is (anti-)parallel to n -- a wall
+// seen edge-on whose normal points along the noise vector -- a coordinate axis not
+// parallel to n takes its place.
+mat3 ao_ssao_frame(vec3 n, vec2 r)
+{
+    vec3 noise = vec3(r, 0.0);
+    vec3 t = noise - n * dot(noise, n);
+    if (!(dot(t, t) > 1e-4)) {
+        vec3 axis = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+        t = axis - n * dot(axis, n); // |t|^2 >= 0.19
+    }
+    t = normalize(t);
+    return mat3(t, cross(n, t), n);
+}
+
+// The weight of an occluded sample whose scene point is |dz| away in view depth.
+float ao_ssao_range_weight(float abs_dz)
+{
+#if defined(AO_RANGE_CHECK_TAOS)
+    // 1 - smoothstep(0, radius, |dz|), written so that radius 0 is a step, not 0 / 0.
+    if (!(abs_dz < u.radius)) return 0.0;
+    return 1.0 - smoothstep(0.0, 1.0, abs_dz / u.radius); // u.radius > abs_dz >= 0
+#else
+    // smoothstep(0, 1, radius / |dz|): 1 for |dz| <= radius, |dz| = 0 included.
+    if (abs_dz <= u.radius) return 1.0;
+    return smoothstep(0.0, 1.0, u.radius / max(abs_dz, 1e-30));
+#endif
+}
+
+float ao_pass(ivec2 target_pixel)
+{
+    ivec2 p = ao_full_pixel(target_pixel);
+    float depth = ao_load_depth(p);
+    if (ao_is_background(depth)) return 1.0;
+#if defined(AO_POINT_CLOUD_FALLBACK)
+    float cavity_ao;
+    if (ao_point_cloud_billboard(p, depth, cavity_ao)) return cavity_ao;
+#endif
+    vec3 P = ao_view_position(ao_pixel_uv(p), depth);
+    if (!ao_is_finite(P)) return 1.0;
+    vec3 V = ao_view_direction(P);
+    vec3 n;
+    if (!ao_surface_normal(p, P, V, n)) return 1.0;
+    mat3 tbn = ao_ssao_frame(n, ao_noise_rotation(target_pixel));
+
+    ivec2 size = ao_depth_size();
+    vec2 fsize = vec2(size);
+    float occlusion = 0.0;
+    for (int i = 0; i < AO_SSAO_SAMPLES; ++i) {
+        vec3 S = P + tbn * (u.kernel[i].xyz * u.radius);
+        vec4 clip = u.proj * vec4(S, 1.0);
+        if (!(clip.w > 1e-30)) continue; // behind the camera (perspective)
+        vec2 ndc = clip.xy / clip.w;
+        vec2 uv = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5);
+        // Off screen (a NaN fails every comparison and is skipped too).
+        if (!(uv.x >= 0.0 && uv.y >= 0.0 && uv.x < 1.0 && uv.y < 1.0)) continue;
+        ivec2 q = min(ivec2(uv * fsize), size - 1);
+        float scene_depth = ao_load_depth(q);
+        if (ao_is_background(scene_depth)) continue; // the background occludes nothing
+        float scene_z = ao_view_z(ao_pixel_uv(q), scene_depth);
+        if (scene_z > S.z + u.bias && ao_is_finite(scene_z))
+            occlusion += ao_ssao_range_weight(abs(P.z - scene_z));
+    }
+    float occluded = occlusion / float(AO_SSAO_SAMPLES);
+#if defined(AO_OUTPUT_STRENGTH)
+    return clamp(1.0 - occluded * u.strength, 0.0, 1.0);
+#else
+    float visibility = 1.0 - occluded;
+    float ao = visibility > 0.0 ? pow(visibility, u.power) : 0.0;
+    return clamp(mix(1.0, ao, u.intensity), 0.0, 1.0);
+#endif
+}
