@@ -1,7 +1,8 @@
 // tests/compiler/glsl_compile.hpp — test helper: GLSL or HLSL source → SPIR-V with glslang.
 //
-// Only for tests: compiles one compute shader for Vulkan 1.0 / SPIR-V 1.0, returns the
-// words or the info logs. glslang's process-wide state is initialised once.
+// Only for tests: compiles one compute shader (compile_compute, GLSL or HLSL) or one GLSL
+// shader of any stage (compile_glsl) for Vulkan 1.0 / SPIR-V 1.0, returns the words or the
+// info logs. glslang's process-wide state is initialised once.
 #pragma once
 
 #include <glslang/Public/ResourceLimits.h>
@@ -69,6 +70,43 @@ inline spirv_result compile_compute(const std::string& source, source_language l
     result.words.assign(words.begin(), words.end());
     result.ok = !result.words.empty();
     if (!result.ok) result.log = "GlslangToSpv produced no words";
+    return result;
+}
+
+// Compiles one GLSL shader of `stage` (EShLangCompute, EShLangVertex, EShLangFragment, ...);
+// `#version` comes from the source. The log holds glslang's info and debug logs, whose
+// messages name the file and line of the source's `#line N "file"` directives.
+inline spirv_result compile_glsl(const std::string& source, EShLanguage stage)
+{
+    init_glslang();
+    spirv_result result;
+    glslang::TShader shader(stage);
+    const char* text = source.c_str();
+    shader.setStrings(&text, 1);
+    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
+        result.log = std::string("parse: ") + shader.getInfoLog() + shader.getInfoDebugLog();
+        return result;
+    }
+    glslang::TProgram program;
+    program.addShader(&shader);
+    if (!program.link(messages)) {
+        result.log = std::string("link: ") + program.getInfoLog() + program.getInfoDebugLog();
+        return result;
+    }
+    std::vector<unsigned int> words;
+    glslang::SpvOptions options;
+    options.validate = false;
+    options.disableOptimizer = true;
+    glslang::GlslangToSpv(*program.getIntermediate(stage), words, &options);
+    result.words.assign(words.begin(), words.end());
+    result.ok = !result.words.empty();
+    if (!result.ok) result.log = "GlslangToSpv produced no words";
+    // Warnings too: a clean compile is expected to have an empty info log.
+    result.log += shader.getInfoLog();
     return result;
 }
 

@@ -1,0 +1,336 @@
+// codegen: the shape of the generated sources -- determinism, the variant's #defines,
+// the bindings and constants, the uniform block, the template files with their #line
+// directives -- and the embedded templates against the source tree's templates/.
+// (Whether the sources compile is tests/compiler/test_codegen_glslang.cpp's business.)
+
+#include "support.hpp"
+
+#include <aogen/codegen.hpp>
+#include <aogen/matrix.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+using namespace aogen;
+using aogen::codegen::resource_kind;
+using aogen::codegen::shader_source;
+using aogen::codegen::shader_stage;
+using aogen_test::error_of;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// A broad set: every choice axis with both stages.
+std::vector<variant> broad_set()
+{
+    variant_matrix m;
+    m.techniques = {technique::ssao, technique::gtao};
+    m.ssao_samples = {1, 16};
+    m.gtao_slices = {1, 3};
+    m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::none};
+    m.blur_depth = {bilateral_depth::linear, bilateral_depth::seed_raw};
+    m.normals = {normal_source::gbuffer_world, normal_source::reconstructed};
+    m.point_cloud_fallback = {false, true};
+    m.depth = {depth_convention::standard, depth_convention::reversed_infinite};
+    m.projection = {projection_kind::perspective, projection_kind::orthographic};
+    m.half_resolution = {false, true};
+    m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
+    return expand(m);
+}
+
+std::vector<std::string> lines_of(const std::string& text)
+{
+    std::vector<std::string> out(1);
+    for (char c : text) {
+        if (c == '\n') out.emplace_back();
+        else out.back() += c;
+    }
+    return out;
+}
+
+// The part of a source before its first #line directive: version, defines, comments.
+std::string preamble(const std::string& glsl) { return glsl.substr(0, glsl.find("#line ")); }
+
+bool contains_line(const std::string& text, const std::string& line)
+{
+    for (const std::string& l : lines_of(text))
+        if (l == line) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("codegen: same variant, same bytes; a pass's source depends on its defines only", "[codegen]")
+{
+    std::map<std::string, std::string> by_defines; // a pass's defines -> its source
+    std::set<std::string> sources;
+    const std::vector<variant> vs = broad_set();
+    for (const variant& v : vs) {
+        const std::vector<shader_source> a = codegen::generate(v);
+        const std::vector<shader_source> b = codegen::generate(variant_from_name(to_name(v)));
+        REQUIRE(a.size() == b.size());
+        for (size_t i = 0; i < a.size(); ++i) {
+            CHECK(a[i].glsl == b[i].glsl);
+            CHECK(a[i].name == b[i].name);
+            CHECK(a[i].files == b[i].files);
+        }
+        for (const shader_source& s : a) {
+            if (s.stage == shader_stage::vertex) continue;
+            std::string key;
+            for (const define& d : defines(v, s.pass)) key += d.name + "=" + d.value + ";";
+            auto [it, inserted] = by_defines.emplace(key, s.glsl);
+            if (!inserted) CHECK(it->second == s.glsl);
+            sources.insert(s.glsl);
+        }
+    }
+    // Different defines, different sources.
+    CHECK(sources.size() == by_defines.size());
+}
+
+TEST_CASE("codegen: passes, stages, names and order", "[codegen]")
+{
+    for (const variant& v : broad_set()) {
+        const std::vector<shader_source> s = codegen::generate(v);
+        const std::vector<pass_kind> p = passes(v);
+        const size_t per_pass = v.stage == pipeline_stage::compute ? 1 : 2;
+        REQUIRE(s.size() == p.size() * per_pass);
+        for (size_t i = 0; i < s.size(); ++i) {
+            INFO(s[i].name);
+            CHECK(s[i].pass == p[i / per_pass]);
+            const shader_stage expected = v.stage == pipeline_stage::compute ? shader_stage::compute
+                                          : i % 2 == 0                       ? shader_stage::vertex
+                                                                             : shader_stage::fragment;
+            CHECK(s[i].stage == expected);
+            CHECK(s[i].name == to_name(v) + "." + names::name_of(pass_kind_names, s[i].pass, "pass") + "." +
+                                   codegen::file_extension(expected));
+            CHECK(s[i].glsl.rfind("#version 450\n#extension GL_GOOGLE_cpp_style_line_directive : require\n", 0) == 0);
+        }
+    }
+    variant v;
+    CHECK(codegen::generate(v).size() == 3);
+    v.blur = blur_mode::box;
+    v.stage = pipeline_stage::fragment;
+    CHECK(codegen::generate(v).size() == 4);
+}
+
+TEST_CASE("codegen: every #define of the pass is in its source, before the templates", "[codegen]")
+{
+    for (const variant& v : broad_set())
+        for (const shader_source& s : codegen::generate(v)) {
+            INFO(s.name);
+            const std::string head = preamble(s.glsl);
+            if (s.stage == shader_stage::vertex) {
+                CHECK(head.find("#define") == std::string::npos);
+                continue;
+            }
+            for (const define& d : defines(v, s.pass))
+                CHECK(contains_line(head, "#define " + d.name + (d.value.empty() ? "" : " " + d.value)));
+            for (const codegen::resource& r : s.resources) {
+                std::string upper = r.name;
+                for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+                CHECK(contains_line(head, "#define AO_BINDING_" + upper + " " + std::to_string(r.binding)));
+            }
+            for (const define& d : codegen::constants(v, s.pass)) CHECK(contains_line(head, "#define " + d.name + " " + d.value));
+            // Exactly one value of each choice.
+            for (const char* group : {"AO_STAGE_", "AO_DEPTH_", "AO_PROJECTION_", "AO_PASS_"}) {
+                size_t n = 0;
+                for (const define& d : defines(v, s.pass)) n += d.name.rfind(group, 0) == 0;
+                CHECK(n == 1);
+            }
+            CHECK((head.find("#define AO_HALF_RESOLUTION\n") != std::string::npos) == v.half_resolution);
+            CHECK((head.find("#define AO_POINT_CLOUD_FALLBACK\n") != std::string::npos) ==
+                  (s.pass == pass_kind::ao && v.point_cloud_fallback));
+        }
+}
+
+TEST_CASE("codegen: the constants come from params.hpp as GLSL float literals", "[codegen]")
+{
+    variant v;
+    auto value = [](const std::vector<define>& ds, const std::string& name) {
+        for (const define& d : ds)
+            if (d.name == name) return d.value;
+        return std::string("<missing>");
+    };
+    const std::vector<define> blur = codegen::constants(v, pass_kind::blur_x);
+    CHECK(value(blur, "AO_BLUR_WEIGHT_0") == "0.196");
+    CHECK(value(blur, "AO_BLUR_WEIGHT_1") == "0.175");
+    CHECK(value(blur, "AO_BLUR_WEIGHT_2") == "0.122");
+    CHECK(value(blur, "AO_BLUR_WEIGHT_3") == "0.067");
+    CHECK(codegen::constants(v, pass_kind::ao).empty());
+    v.point_cloud_fallback = true;
+    const std::vector<define> pc = codegen::constants(v, pass_kind::ao);
+    CHECK(value(pc, "AO_PC_BACKGROUND_DEPTH") == "0.9999");
+    CHECK(value(pc, "AO_PC_SAME_DEPTH") == "5e-06");
+    CHECK(value(pc, "AO_PC_CAVITY_THRESHOLD") == "2e-04");
+    CHECK(value(pc, "AO_PC_RING_PIXELS") == "3");
+    v.blur = blur_mode::box;
+    CHECK(value(codegen::constants(v, pass_kind::blur_box), "AO_BLUR_BOX_SIZE") == "4");
+}
+
+TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, binding 0", "[codegen]")
+{
+    layout::declaration_options o;
+    o.instance = "u";
+    auto decl = [&](const layout::block_desc& b) {
+        return layout::declare(layout::compute(b, layout::rules::std140), layout::language::glsl, o);
+    };
+    variant v;
+    v.ssao_samples = 32;
+    std::vector<shader_source> s = codegen::generate(v);
+    CHECK(s[0].glsl.find("#line 1 \"aogen:SsaoUniforms\"\n" + decl(uniforms::ssao_block(32))) != std::string::npos);
+    CHECK(s[1].glsl.find("#line 1 \"aogen:BlurUniforms\"\n" + decl(uniforms::blur_block())) != std::string::npos);
+    v.tech = technique::gtao;
+    s = codegen::generate(v);
+    CHECK(s[0].glsl.find(decl(uniforms::gtao_block())) != std::string::npos);
+    v = variant{};
+    v.point_cloud_fallback = true; // seed 004's variant still reads SsaoUniforms
+    CHECK(codegen::uniform_block(v, pass_kind::ao).root.name == "SsaoUniforms");
+    // No template declares a uniform block of its own.
+    for (const codegen::template_text& t : codegen::embedded_templates()) {
+        INFO(t.path);
+        CHECK(t.text.find("uniform Ssao") == std::string::npos);
+        CHECK(t.text.find("uniform Gtao") == std::string::npos);
+        CHECK(t.text.find("uniform Blur") == std::string::npos);
+        CHECK(t.text.find("layout(std140") == std::string::npos);
+    }
+}
+
+TEST_CASE("codegen: template files in order, each after #line 1 \"<file>\"", "[codegen]")
+{
+    for (const variant& v : broad_set())
+        for (const shader_source& s : codegen::generate(v)) {
+            INFO(s.name);
+            REQUIRE_FALSE(s.files.empty());
+            size_t at = 0;
+            for (const std::string& f : s.files) {
+                const std::string directive = "#line 1 \"" + f + "\"\n";
+                const size_t found = s.glsl.find(directive, at);
+                REQUIRE(found != std::string::npos);
+                const std::string text = codegen::embedded_template(f);
+                CHECK(s.glsl.compare(found + directive.size(), text.size(), text) == 0);
+                at = found + directive.size();
+            }
+            CHECK(s.files == codegen::template_files(v, s.pass, s.stage));
+            const bool pc = std::find(s.files.begin(), s.files.end(), "ssao_point_cloud.glsl") != s.files.end();
+            CHECK(pc == (s.pass == pass_kind::ao && s.stage != shader_stage::vertex && v.point_cloud_fallback));
+        }
+    variant v;
+    CHECK(codegen::template_files(v, pass_kind::ao, shader_stage::compute) ==
+          std::vector<std::string>{"common/core.glsl", "common/depth.glsl", "common/normals.glsl", "common/noise.glsl",
+                                   "ssao.glsl", "entry_compute.glsl"});
+    v.stage = pipeline_stage::fragment;
+    CHECK(codegen::template_files(v, pass_kind::blur_y, shader_stage::fragment) ==
+          std::vector<std::string>{"common/core.glsl", "common/depth.glsl", "blur_bilateral.glsl", "entry_fragment.glsl"});
+    CHECK(codegen::template_files(v, pass_kind::ao, shader_stage::vertex) ==
+          std::vector<std::string>{"common/fullscreen_vertex.glsl"});
+}
+
+TEST_CASE("codegen: resources per pass and stage", "[codegen]")
+{
+    using k = resource_kind;
+    auto bindings = [](const std::vector<codegen::resource>& rs) {
+        std::vector<std::tuple<uint32_t, k, std::string>> out;
+        for (const auto& r : rs) {
+            CHECK(r.set == 0);
+            out.emplace_back(r.binding, r.kind, r.name);
+        }
+        return out;
+    };
+    variant v;
+    using row = std::tuple<uint32_t, k, std::string>;
+    CHECK(bindings(codegen::resources(v, pass_kind::ao, shader_stage::compute)) ==
+          std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::combined_image_sampler, "depth"},
+                           {2, k::combined_image_sampler, "normals"}, {3, k::combined_image_sampler, "noise"},
+                           {4, k::storage_image, "output"}});
+    CHECK(bindings(codegen::resources(v, pass_kind::blur_x, shader_stage::compute)) ==
+          std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::combined_image_sampler, "depth"},
+                           {2, k::combined_image_sampler, "ao_input"}, {3, k::storage_image, "output"}});
+    CHECK(codegen::resources(v, pass_kind::ao, shader_stage::compute).front().block == "SsaoUniforms");
+    CHECK(codegen::resources(v, pass_kind::blur_y, shader_stage::compute).front().block == "BlurUniforms");
+    v.normals = normal_source::reconstructed;
+    v.stage = pipeline_stage::fragment;
+    CHECK(bindings(codegen::resources(v, pass_kind::ao, shader_stage::fragment)) ==
+          std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::combined_image_sampler, "depth"},
+                           {3, k::combined_image_sampler, "noise"}});
+    CHECK(codegen::resources(v, pass_kind::ao, shader_stage::vertex).empty());
+}
+
+TEST_CASE("codegen: the fullscreen vertex shader is one text for every pass and variant", "[codegen]")
+{
+    std::set<std::string> texts;
+    for (const variant& v : broad_set())
+        for (const shader_source& s : codegen::generate(v))
+            if (s.stage == shader_stage::vertex) {
+                texts.insert(s.glsl);
+                CHECK(s.resources.empty());
+            }
+    CHECK(texts.size() == 1);
+}
+
+TEST_CASE("codegen: embedded templates equal the source tree's", "[codegen]")
+{
+    REQUIRE(codegen::have_embedded_templates());
+    const std::vector<codegen::template_text> embedded = codegen::embedded_templates();
+    REQUIRE(embedded.size() >= 12);
+    CHECK(std::is_sorted(embedded.begin(), embedded.end(),
+                         [](const auto& a, const auto& b) { return a.path < b.path; }));
+    const codegen::template_reader source = codegen::directory_reader(AOGEN_TEMPLATE_DIR);
+    for (const codegen::template_text& t : embedded) {
+        INFO(t.path);
+        CHECK(source(t.path) == t.text);
+        CHECK(t.text.find('\r') == std::string::npos);
+        CHECK(std::all_of(t.text.begin(), t.text.end(),
+                          [](char c) { return c == '\n' || c == '\t' || (c >= ' ' && c <= '~'); }));
+        CHECK(t.text.find(")aogen_glsl\"") == std::string::npos);
+        CHECK((!t.text.empty() && t.text.back() == '\n'));
+    }
+    // Every file any variant uses is embedded.
+    std::set<std::string> used;
+    for (const variant& v : broad_set())
+        for (const shader_source& s : codegen::generate(v)) used.insert(s.files.begin(), s.files.end());
+    std::set<std::string> have;
+    for (const auto& t : embedded) have.insert(t.path);
+    CHECK(used == have);
+}
+
+TEST_CASE("codegen: a directory reader normalises CRLF and names a missing file", "[codegen]")
+{
+    const std::string dir = AOGEN_TEMPLATE_DIR;
+    CHECK_THAT(error_of([&] { codegen::generate(variant{}, dir + "/no-such-dir"); }),
+               Contains("template 'common/core.glsl': cannot read " + dir + "/no-such-dir/common/core.glsl"));
+    CHECK_THAT(error_of([] { codegen::embedded_template("nope.glsl"); }),
+               Contains("template 'nope.glsl': is not among the embedded templates (valid: blur_bilateral.glsl, "));
+    // A reader of CRLF text gives the same source as one of LF text.
+    const codegen::template_reader lf = codegen::template_reader(codegen::embedded_template);
+    const codegen::template_reader crlf = [](const std::string& path) {
+        std::string out;
+        for (char c : codegen::embedded_template(path)) out += c == '\n' ? std::string("\r\n") : std::string(1, c);
+        return out;
+    };
+    // (generate() itself does not normalise a custom reader; directory_reader does.)
+    CHECK(codegen::generate(variant{}, lf)[0].glsl != codegen::generate(variant{}, crlf)[0].glsl);
+}
+
+TEST_CASE("codegen: invalid input is an aogen::error", "[codegen]")
+{
+    variant v;
+    v.ssao_samples = 0;
+    CHECK_THAT(error_of([&] { codegen::generate(v); }), Contains("ssao samples: 0 is out of range (valid: 1..256)"));
+    v = variant{};
+    v.tech = technique::gtao;
+    v.point_cloud_fallback = true;
+    CHECK_THAT(error_of([&] { codegen::generate(v); }), Contains("point-cloud fallback"));
+    v = variant{};
+    CHECK_THAT(error_of([&] { codegen::resources(v, pass_kind::blur_box, shader_stage::compute); }),
+               Contains("pass: blur_box is not a pass of ssao-s16-half-bilateral-gbufworld-std-persp-cs (valid: ao, blur_x, blur_y)"));
+    CHECK_THAT(error_of([&] { codegen::template_files(v, pass_kind::ao, shader_stage::fragment); }),
+               Contains("shader stage: fragment is not a stage of a compute variant (valid: compute)"));
+    v.stage = pipeline_stage::fragment;
+    CHECK_THAT(error_of([&] { codegen::generate_shader(v, pass_kind::ao, shader_stage::compute, codegen::embedded_template); }),
+               Contains("valid: vertex, fragment"));
+    CHECK_THAT(error_of([&] { codegen::generate_shader(v, pass_kind::ao, static_cast<shader_stage>(7), codegen::embedded_template); }),
+               Contains("shader stage: 7 is not a valid value"));
+}
