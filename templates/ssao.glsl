@@ -9,7 +9,10 @@
 //   S = P + TBN * kernel[i].xyz * radius, projected to the screen with u.proj;
 //   samples behind the camera or projecting off screen are skipped (they count as
 //   unoccluded: the sum is still divided by all AO_SSAO_SAMPLES, as the seeds do), and
-//   so are samples landing on background;
+//   so are samples landing on background, and samples landing in the pixel's own texel
+//   (ours, not the seeds'): comparing the surface with its own depth can only measure
+//   depth quantization -- at grazing angles, or when the radius projects below a pixel,
+//   it darkens open planes -- never an occluder;
 //   the sample is occluded when the scene's view z at its pixel is > S.z + bias (the
 //   visible surface is closer to the camera than the sample: the sample is inside
 //   geometry). Comparing with the sample's z, not the pixel's, keeps the bias
@@ -96,6 +99,7 @@ float ao_pass(ivec2 target_pixel)
         // Off screen (a NaN fails every comparison and is skipped too).
         if (!(uv.x >= 0.0 && uv.y >= 0.0 && uv.x < 1.0 && uv.y < 1.0)) continue;
         ivec2 q = min(ivec2(uv * fsize), size - 1);
+        if (q == p) continue; // its own texel: a self-comparison that can only measure depth quantization
         float scene_depth = ao_load_depth(q);
         if (ao_is_background(scene_depth)) continue; // the background occludes nothing
         float scene_z = ao_view_z(ao_pixel_uv(q), scene_depth);
