@@ -5,9 +5,11 @@
 //   aogen noise   --size N --seed S --pattern P --encoding E --format json|cpp|bin
 //   aogen seeds   --out DIR     the seeds' default configurations' data, written to DIR
 //   aogen list    [--variants]  the variant axes and their values, or the default matrix
+//   aogen generate [--variants SPEC.json] [--scene SCENE.json] --targets T,... --out DIR [NAME ...]
 //
 // Every failure is one line on stderr ("aogen: <what>: <problem> (<valid>)") and a
 // non-zero exit; files are written whole or not at all. `aogen <command> --help` says more.
+#include "cmd_generate.hpp"
 #include "cmd_kernel.hpp"
 #include "cmd_layout.hpp"
 #include "cmd_list.hpp"
@@ -29,11 +31,13 @@ int main(int argc, char** argv)
     aogen::cli::noise_command noise;
     aogen::cli::seeds_command seeds;
     aogen::cli::list_command list;
+    aogen::cli::generate_command generate;
     layout.add_to(app);
     kernel.add_to(app);
     noise.add_to(app);
     seeds.add_to(app);
     list.add_to(app);
+    generate.add_to(app);
 
     try {
         app.parse(argc, argv);

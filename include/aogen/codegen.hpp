@@ -100,26 +100,8 @@ namespace aogen::codegen {
 // Stages and resources
 // ---------------------------------------------------------------------------------
 
-enum class shader_stage { compute, vertex, fragment };
-inline constexpr std::array<enum_name<shader_stage>, 3> shader_stage_names{{
-    {shader_stage::compute, "compute"},
-    {shader_stage::vertex, "vertex"},
-    {shader_stage::fragment, "fragment"},
-}};
-static_assert(names::distinct(shader_stage_names));
-
-inline const char* to_name(shader_stage s) { return names::name_of(shader_stage_names, s, "shader stage"); }
-
-// The usual file extension of a stage's GLSL (glslangValidator's): comp, vert, frag.
-inline const char* file_extension(shader_stage s)
-{
-    switch (s) {
-    case shader_stage::compute: return "comp";
-    case shader_stage::vertex: return "vert";
-    case shader_stage::fragment: return "frag";
-    }
-    names::fail_unlisted(shader_stage_names, s, "shader stage");
-}
+using aogen::shader_stage; // defined in variant.hpp, shared with compile.hpp
+using aogen::file_extension;
 
 enum class resource_kind { uniform_buffer, combined_image_sampler, storage_image };
 inline constexpr std::array<enum_name<resource_kind>, 3> resource_kind_names{{

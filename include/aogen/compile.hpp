@@ -148,19 +148,8 @@ namespace aogen::compile {
 // Stages and targets
 // ---------------------------------------------------------------------------------
 
-enum class shader_stage { compute, vertex, fragment };
-inline constexpr std::array<enum_name<shader_stage>, 3> shader_stage_names{{
-    {shader_stage::compute, "compute"},
-    {shader_stage::vertex, "vertex"},
-    {shader_stage::fragment, "fragment"},
-}};
-static_assert(names::distinct(shader_stage_names));
-
-inline const char* to_name(shader_stage s) { return names::name_of(shader_stage_names, s, "shader stage"); }
-inline shader_stage shader_stage_from_name(std::string_view name, std::string_view subject = "shader stage")
-{
-    return names::value_of(shader_stage_names, name, subject);
-}
+using aogen::shader_stage; // defined in variant.hpp, shared with codegen.hpp
+using aogen::shader_stage_from_name;
 
 // The stage of a variant's AO pass (its fragment passes also need a vertex shader).
 inline shader_stage stage_of(pipeline_stage s)

@@ -61,6 +61,7 @@ struct declaration_options {
     uint32_t set = 0;      // descriptor set (GLSL), bind group (WGSL), register space (HLSL)
     uint32_t binding = 0;  // binding (GLSL, WGSL), register b# (HLSL)
     std::string instance;  // GLSL block instance / WGSL variable; empty: the block name with a lower-case first letter
+    bool cpp_prelude = true; // C++: include the helper templates (leave out when emitting several into one header)
 };
 
 namespace detail {
@@ -375,9 +376,9 @@ inline const char* cpp_prelude()
            "#endif\n";
 }
 
-inline std::string declare_cpp(const struct_layout& l, const declaration_options&)
+inline std::string declare_cpp(const struct_layout& l, const declaration_options& o)
 {
-    std::string out = header_comment(l) + cpp_prelude();
+    std::string out = header_comment(l) + (o.cpp_prelude ? cpp_prelude() : "");
     std::set<std::string> seen;
     for_each_struct(l.members, seen, [&](const member_layout& s) { out += cpp_struct(s.type, s.members, s.element_size); });
     out += cpp_struct(l.name, l.members, l.size);

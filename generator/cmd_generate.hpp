@@ -1,0 +1,267 @@
+// generator/cmd_generate.hpp — `aogen generate`: shader variants for every target.
+//
+//   aogen generate --out DIR                                  the default matrix
+//   aogen generate --out DIR ssao-s16-half-bilateral-gbufworld-std-persp-cs ...
+//   aogen generate --out DIR --variants spec.json --scene scene.json --targets spv,hlsl60
+//
+// For every variant (after scene selection when --scene is given) and every shader of
+// its passes, it writes DIR/<variant>/<pass>.<comp|vert|frag>.<target extension>, then
+//   DIR/manifest.json       bindings, uniform layouts, features and what was left out
+//   DIR/aogen_variants.hpp  SPIR-V as uint32_t arrays, the uniform structs (C++, with
+//                           static_asserts), binding constants
+// All of it is built in memory first; files are written only when everything compiled,
+// each to a temporary name and renamed, and a file whose bytes would not change is not
+// rewritten. Identical sources (variants sharing an AO pass) are compiled once.
+#pragma once
+
+#include "output.hpp"
+#include "struct_json.hpp"
+#include "variant_json.hpp"
+
+#include <aogen/codegen.hpp>
+#include <aogen/compile.hpp>
+#include <aogen/declare.hpp>
+#include <aogen/matrix.hpp>
+#include <aogen/selection.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+
+namespace aogen::cli {
+
+// The file extension each target's output gets after "<pass>.<stage>.".
+inline const char* target_extension(compile::target t)
+{
+    switch (t) {
+    case compile::target::spv: return "spv";
+    case compile::target::glsl: return "glsl";
+    case compile::target::essl: return "essl";
+    case compile::target::hlsl50: return "sm50.hlsl";
+    case compile::target::hlsl60: return "sm60.hlsl";
+    case compile::target::msl_macos: return "macos.metal";
+    case compile::target::msl_ios: return "ios.metal";
+    }
+    names::fail_unlisted(compile::target_names, t, "target");
+}
+
+// A C++ identifier from a variant or pass name: '-' and '.' become '_'.
+inline std::string identifier(std::string s)
+{
+    for (char& c : s)
+        if (c == '-' || c == '.') c = '_';
+    return s;
+}
+
+inline std::string spirv_array(const std::string& name, const std::vector<uint32_t>& words)
+{
+    static const char digits[] = "0123456789abcdef";
+    std::string out = "inline constexpr std::uint32_t " + name + "[" + std::to_string(words.size()) + "] = {";
+    for (size_t i = 0; i < words.size(); ++i) {
+        out += i % 8 == 0 ? "\n    " : " ";
+        std::string hex = "0x00000000";
+        for (int d = 0; d < 8; ++d) hex[9 - d] = digits[(words[i] >> (4 * d)) & 15];
+        out += hex + ",";
+    }
+    return out + "\n};\n";
+}
+
+class variant_generator {
+public:
+    std::vector<compile::target> targets;
+    std::map<std::string, std::string> files; // path relative to DIR → bytes
+    nlohmann::ordered_json manifest = {{"variants", nlohmann::ordered_json::array()}};
+    std::string header;
+
+    void add(const variant& v, const feature_list& features)
+    {
+        const std::string name = to_name(v);
+        const std::string ns = identifier(name);
+        nlohmann::ordered_json entry;
+        entry["name"] = name;
+        entry["hash"] = hash(v);
+        entry["technique"] = names::name_of(technique_names, v.tech, "technique");
+        entry["stage"] = names::name_of(pipeline_stage_names, v.stage, "stage");
+        entry["features"] = features.compiled;
+        nlohmann::ordered_json left = nlohmann::ordered_json::array();
+        for (const left_out_feature& f : features.left_out) left.push_back({{"feature", f.feature}, {"why", f.why}});
+        entry["left_out"] = left;
+
+        std::string ns_body;
+        std::vector<std::string> declared_structs;
+        nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+        for (const codegen::shader_source& s : codegen::generate(v)) {
+            const shader_stage stage = s.stage;
+            const compile::compiled& c = compiled_once(s.glsl, stage, s.name);
+            const std::string base = name + "/" + names::name_of(pass_kind_names, s.pass, "pass") + "." +
+                                     file_extension(s.stage);
+            nlohmann::ordered_json pass;
+            pass["pass"] = names::name_of(pass_kind_names, s.pass, "pass");
+            pass["stage"] = to_name(stage);
+            nlohmann::ordered_json outputs;
+            for (compile::target t : targets) {
+                const std::string path = base + "." + target_extension(t);
+                outputs[compile::to_name(t)] = path;
+                if (t == compile::target::spv) files[path] = spirv_bytes(c.spirv);
+                else files[path] = c.text.at(t);
+            }
+            pass["outputs"] = outputs;
+            pass["entry"] = c.refl.entry_points.at(compile::target::spv);
+            nlohmann::ordered_json entries;
+            for (const auto& [t, e] : c.refl.entry_points) entries[compile::to_name(t)] = e;
+            pass["entry_points"] = entries;
+            pass["bindings"] = bindings_json(c.refl);
+            if (stage == shader_stage::compute)
+                pass["workgroup_size"] = {c.refl.workgroup_size[0], c.refl.workgroup_size[1], c.refl.workgroup_size[2]};
+            const std::string pass_id = identifier(pass["pass"].get<std::string>() + "_" + file_extension(s.stage));
+            ns_body += "// pass " + pass["pass"].get<std::string>() + ", " + to_name(stage) + " shader\n";
+            ns_body += spirv_array(pass_id + "_spv", c.spirv);
+            for (const compile::descriptor_binding& b : c.refl.bindings)
+                ns_body += "inline constexpr std::uint32_t " + pass_id + "_binding_" + identifier(b.instance.empty() ? b.name : b.instance) +
+                           " = " + std::to_string(b.binding) + ";\n";
+            for (const codegen::resource& r : s.resources) {
+                if (r.kind != codegen::resource_kind::uniform_buffer) continue;
+                const layout::struct_layout l = layout::compute(codegen::uniform_block(v, s.pass), layout::rules::std140);
+                const compile::buffer_block* block = compile::find_block(c.refl, l.name);
+                if (!block) fail(s.name, "its SPIR-V has no uniform block " + l.name, "valid: the block codegen declared");
+                compile::check_layout(*block, l); // the core layout engine against SPIR-V's own offsets
+                pass["uniforms"] = layout_to_json(l);
+                if (std::find(declared_structs.begin(), declared_structs.end(), l.name) == declared_structs.end()) {
+                    declared_structs.push_back(l.name);
+                    layout::declaration_options o;
+                    o.cpp_prelude = false;
+                    ns_body += layout::declare(l, layout::language::cpp, o);
+                }
+            }
+            pass["spirv_words"] = c.refl.spirv_words;
+            pass["spirv_instructions"] = c.refl.spirv_instructions;
+            passes.push_back(pass);
+        }
+        // The variant's own figures are its AO shader's (the first compute or fragment pass).
+        for (const auto& p : passes)
+            if (p["pass"] == "ao" && p["stage"] != "vertex") {
+                entry["entry"] = p["entry"];
+                entry["outputs"] = p["outputs"];
+                entry["bindings"] = p["bindings"];
+                entry["uniforms"] = p["uniforms"];
+                entry["spirv_instructions"] = p["spirv_instructions"];
+            }
+        entry["passes"] = passes;
+        manifest["variants"].push_back(entry);
+        header += "namespace " + ns + " {\ninline constexpr const char name[] = \"" + name + "\";\n" + ns_body +
+                  "} // namespace " + ns + "\n\n";
+    }
+
+    std::string header_text() const
+    {
+        return "// aogen_variants.hpp — generated by `aogen generate`; do not edit.\n"
+               "// Per variant (namespace aogen_variants::<variant name with '_'>): the SPIR-V of each\n"
+               "// pass, its binding numbers and the uniform structs as the shader declares them.\n"
+               "#pragma once\n" +
+               std::string(layout::detail::cpp_prelude()) + "\nnamespace aogen_variants {\n\n" + header +
+               "} // namespace aogen_variants\n";
+    }
+
+private:
+    std::map<std::string, compile::compiled> cache_; // by GLSL source text
+
+    const compile::compiled& compiled_once(const std::string& glsl, shader_stage stage, const std::string& name)
+    {
+        auto found = cache_.find(glsl);
+        if (found != cache_.end()) return found->second;
+        return cache_.emplace(glsl, compile::compile(glsl, stage, name, targets)).first->second;
+    }
+
+    static std::string spirv_bytes(const std::vector<uint32_t>& words)
+    {
+        std::string bytes;
+        for (uint32_t w : words)
+            for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<char>(w >> (8 * i)));
+        return bytes;
+    }
+
+    static nlohmann::ordered_json bindings_json(const compile::reflection& refl)
+    {
+        nlohmann::ordered_json out = nlohmann::ordered_json::array();
+        for (const compile::descriptor_binding& b : refl.bindings) {
+            nlohmann::ordered_json j;
+            j["set"] = b.set;
+            j["binding"] = b.binding;
+            j["kind"] = compile::to_name(b.kind);
+            j["name"] = b.instance.empty() ? b.name : b.instance;
+            j["type"] = b.type;
+            if (!b.image_format.empty()) j["format"] = b.image_format;
+            out.push_back(j);
+        }
+        return out;
+    }
+};
+
+struct generate_command {
+    std::string spec;
+    std::string scene;
+    std::string out;
+    std::string targets = "spv,glsl,essl,hlsl,hlsl60,msl,msl_ios";
+    std::vector<std::string> variant_names;
+    bool quiet = false;
+
+    void add_to(CLI::App& app)
+    {
+        CLI::App* sub = app.add_subcommand("generate", "Generate shader variants for every target, a manifest and a C++ header");
+        sub->add_option("--variants", spec, "A variant spec (JSON: \"variants\" names and/or \"matrices\")");
+        sub->add_option("--scene", scene, "What the renderer has and needs (JSON); selects each variant's features");
+        sub->add_option("--targets", targets, "Comma-separated: " + compile::target_list())->capture_default_str();
+        sub->add_option("--out", out, "Output directory")->required();
+        sub->add_flag("--quiet", quiet, "No progress on stderr");
+        sub->add_option("NAME", variant_names, "Variant names (see aogen list); none and no --variants: the default matrix");
+        sub->callback([this] { run(); });
+    }
+
+    void run() const
+    {
+        variant_generator g;
+        for (const std::string& t : split_list(targets)) g.targets.push_back(compile::target_from_name(t, "--targets"));
+        if (g.targets.empty()) fail("--targets", "is empty", "valid: " + compile::target_list());
+        std::vector<variant> variants;
+        for (const std::string& n : variant_names) append_unique(variants, variant_from_name(n));
+        if (!spec.empty())
+            for (const variant& v : variants_from_json(json_reader(json_reader::parse(read_file(spec), spec), spec)))
+                append_unique(variants, v);
+        if (variant_names.empty() && spec.empty()) variants = default_matrix();
+
+        std::optional<scene_needs> needs;
+        if (!scene.empty()) needs = scene_from_json(json_reader(json_reader::parse(read_file(scene), scene), scene));
+        std::vector<selection> selected;
+        for (const variant& v : variants) {
+            selection s = needs ? select(v, *needs) : selection{v, features(v)};
+            bool duplicate = false;
+            for (const selection& existing : selected) duplicate = duplicate || existing.v == s.v;
+            if (!duplicate) selected.push_back(s);
+        }
+        for (size_t i = 0; i < selected.size(); ++i) {
+            if (!quiet) std::cerr << "aogen: [" << i + 1 << "/" << selected.size() << "] " << to_name(selected[i].v) << "\n";
+            g.add(selected[i].v, selected[i].features);
+        }
+        g.files["manifest.json"] = g.manifest.dump(2) + "\n";
+        g.files["aogen_variants.hpp"] = g.header_text();
+        size_t written = 0;
+        for (const auto& [path, bytes] : g.files) written += write_file_atomically(std::filesystem::path(out) / path, bytes);
+        if (!quiet)
+            std::cerr << "aogen: " << selected.size() << " variants, " << g.files.size() << " files in " << out << " ("
+                      << written << " written, " << g.files.size() - written << " unchanged)\n";
+    }
+
+    static std::vector<std::string> split_list(const std::string& s)
+    {
+        std::vector<std::string> parts;
+        std::string part;
+        for (char c : s + ",") {
+            if (c != ',') part += c;
+            else if (!part.empty()) parts.push_back(part), part.clear();
+        }
+        return parts;
+    }
+};
+
+} // namespace aogen::cli
