@@ -35,7 +35,7 @@ expect_error() {
 
 case $case in
 help)
-  for sub in "" layout kernel noise seeds list; do
+  for sub in "" layout kernel noise seeds list generate; do
     check "aogen $sub --help" bash -c "'$aogen' $sub --help | grep -q Usage"
   done
   expect_error "no command" "A subcommand is required|subcommand"
@@ -126,6 +126,73 @@ list)
   check "the default matrix has 73 variants" test "$(wc -l <"$work/variants.txt")" -eq 73
   check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 73
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004" "$work/variants.txt"
+  ;;
+generate)
+  v1=ssao-s16-half-bilateral-gbufworld-std-persp-cs
+  v2=gtao-2x3-full-box-recon-rev-ortho-fs
+  "$aogen" generate --quiet --out "$work/gen" --targets spv,glsl,hlsl,hlsl60,msl,msl_ios $v1 $v2
+  check "manifest lists both variants" python3 -c "
+import json; m = json.load(open('$work/gen/manifest.json'))
+names = [v['name'] for v in m['variants']]
+assert names == ['$v1', '$v2'], names
+ao = m['variants'][0]
+assert ao['bindings'][0]['kind'] == 'uniform_buffer' and ao['uniforms']['name'] == 'SsaoUniforms', ao['bindings']
+assert ao['uniforms']['size'] == 496 and ao['passes'][0]['workgroup_size'] == [8, 8, 1]
+assert [p['pass'] for p in ao['passes']] == ['ao', 'blur_x', 'blur_y']
+fs = m['variants'][1]
+assert [(p['pass'], p['stage']) for p in fs['passes']] == [('ao', 'vertex'), ('ao', 'fragment'), ('blur_box', 'vertex'), ('blur_box', 'fragment')]
+assert not any(b['binding'] == 2 for b in fs['bindings']), 'reconstructed normals declare no normal buffer'
+assert any(f['feature'] == 'normal buffer input' for f in fs['left_out'])
+"
+  printf '#include "aogen_variants.hpp"\nstatic_assert(aogen_variants::%s::ao_comp_spv[0] == 0x07230203u);\n' "${v1//-/_}" >"$work/use.cpp"
+  check "the header compiles" c++ -std=c++17 -fsyntax-only -I"$work/gen" "$work/use.cpp"
+  touch "$work/marker"
+  "$aogen" generate --quiet --out "$work/gen" --targets spv,glsl,hlsl,hlsl60,msl,msl_ios $v1 $v2
+  check "a second run rewrites nothing" test -z "$(find "$work/gen" -type f -newer "$work/marker")"
+  printf '{"point_clouds": false, "normals": "gbuffer_view", "blur": "none"}' >"$in/scene.json"
+  "$aogen" generate --quiet --out "$work/scene" --targets spv --scene "$in/scene.json" ssao-s16-half-bilateral-gbufworld-std-persp-cs-pc
+  check "the scene selects the variant and says what it left out" python3 -c "
+import json; v = json.load(open('$work/scene/manifest.json'))['variants'][0]
+assert v['name'] == 'ssao-s16-half-noblur-gbufview-std-persp-cs', v['name']
+why = {f['feature']: f['why'] for f in v['left_out']}
+assert why['point-cloud fallback'] == 'the scene has no point clouds', why
+assert why['world-to-view normal rotation'] == 'the G-buffer normals are already in view space', why
+"
+  printf '{"matrices": [{"technique": ["ssao"], "samples": [8, 16], "blur": ["box", "none"]}], "variants": ["gtao-1x1-half-noblur-gbufworld-std-persp-cs"]}' >"$in/spec.json"
+  "$aogen" generate --quiet --out "$work/spec" --targets spv --variants "$in/spec.json"
+  check "a spec expands its matrices" python3 -c "
+import json; names = [v['name'] for v in json.load(open('$work/spec/manifest.json'))['variants']]
+assert len(names) == 5 and 'ssao-s8-half-box-gbufworld-std-persp-cs' in names, names
+"
+  expect_error "unknown variant" "'blurry' is not a known name" generate --out gen ssao-s16-half-blurry-gbufworld-std-persp-cs
+  expect_error "unknown target" "--targets: 'dxil' is not a known name.*valid: spv" generate --targets spv,dxil --out gen
+  printf '{"matrices": [{"samples": [0]}]}' >"$in/bad_spec.json"
+  expect_error "sample count out of range in a spec" "matrices\[0\].samples\[0\]: 0 is out of range" generate --variants "$in/bad_spec.json" --out gen
+  printf '{"normals": "bent"}' >"$in/bad_scene.json"
+  expect_error "unknown normals in a scene" "bad_scene.json.normals: 'bent' is not a known name" generate --scene "$in/bad_scene.json" --out gen ssao-s16-half-bilateral-gbufworld-std-persp-cs
+  ;;
+generate_default)
+  # The default matrix for every target; then every distinct output re-validated by a
+  # real compiler: SPIR-V by spirv-val, GLSL and ESSL by glslangValidator, HLSL by
+  # glslang's HLSL front end. MSL has no compiler on Linux: it must name its entry point.
+  "$aogen" generate --quiet --out "$work/all"
+  check "73 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 73"
+  cd "$work/all"
+  declare -A seen
+  checked=0
+  while IFS= read -r f; do
+    sum=$(sha256sum "$f" | cut -c1-64); [ -n "${seen[$sum]:-}" ] && continue; seen[$sum]=1
+    stage=$(basename "$f" | cut -d. -f2)
+    case $f in
+      *.spv) check "$f" spirv-val --target-env vulkan1.0 "$f" ;;
+      *.glsl|*.essl) check "$f" glslangValidator -S "$stage" "$f" >/dev/null ;;
+      *.hlsl) check "$f" glslangValidator -D -e main -S "$stage" -V -o /dev/null "$f" >/dev/null ;;
+      *.metal) check "$f" grep -q "main0(" "$f" ;;
+    esac
+    checked=$((checked + 1))
+  done < <(find . -type f ! -name manifest.json ! -name '*.hpp' | LC_ALL=C sort)
+  echo "re-validated $checked distinct outputs"
+  cd - >/dev/null
   ;;
 *) echo "unknown case $case"; exit 2 ;;
 esac

@@ -1,14 +1,16 @@
-# Configures, builds and runs examples/consumer against the aogen installed in PREFIX.
-#   cmake -DSOURCE=<aogen source> -DPREFIX=<install prefix> -DWORK=<scratch dir> -P consumer_test.cmake
+# Configures, builds and runs examples/<EXAMPLE> against the aogen installed in PREFIX;
+# the example's executable is <PROGRAM>.
+#   cmake -DSOURCE=<aogen source> -DEXAMPLE=consumer -DPROGRAM=consumer -DPREFIX=<install prefix>
+#         -DWORK=<scratch dir> -P consumer_test.cmake
 file(REMOVE_RECURSE "${WORK}")
 foreach(step
-    "configure;${CMAKE_COMMAND};-S;${SOURCE}/examples/consumer;-B;${WORK};-DCMAKE_PREFIX_PATH=${PREFIX}"
+    "configure;${CMAKE_COMMAND};-S;${SOURCE}/examples/${EXAMPLE};-B;${WORK};-DCMAKE_PREFIX_PATH=${PREFIX}"
     "build;${CMAKE_COMMAND};--build;${WORK}"
-    "run;${WORK}/consumer")
+    "run;${WORK}/${PROGRAM}")
   list(POP_FRONT step name)
   execute_process(COMMAND ${step} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT result EQUAL 0)
-    message(FATAL_ERROR "consumer ${name} failed (${result}):\n${out}\n${err}")
+    message(FATAL_ERROR "${EXAMPLE} ${name} failed (${result}):\n${out}\n${err}")
   endif()
 endforeach()
-message(STATUS "consumer output:\n${out}")
+message(STATUS "${EXAMPLE} output:\n${out}")
