@@ -3,12 +3,15 @@
 // ceil(width / AO_WORKGROUP_X) x ceil(height / AO_WORKGROUP_Y) groups for the output
 // image's size; invocations past its edge write nothing.
 //
-// Binding AO_BINDING_OUTPUT: the output, an r8 (R8_UNORM) storage image of the AO target
-// size. The value written is ao_finalize(ao_pass(pixel)): finite and in [0, 1].
+// Binding AO_BINDING_OUTPUT: the output, a storage image of the AO target size in the
+// format AO_OUTPUT_FORMAT (codegen::options::output_format): r8 (R8_UNORM, the default),
+// rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
+// written is ao_finalize(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
+// formats get (ao, 0, 0, 1).
 
 layout(local_size_x = AO_WORKGROUP_X, local_size_y = AO_WORKGROUP_Y, local_size_z = 1) in;
 
-layout(set = 0, binding = AO_BINDING_OUTPUT, r8) uniform writeonly image2D u_output;
+layout(set = 0, binding = AO_BINDING_OUTPUT, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;
 
 void main()
 {

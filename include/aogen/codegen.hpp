@@ -10,6 +10,7 @@
 //       #define AO_STAGE_COMPUTE           ← aogen::defines(v, pass), in its order
 //       ...
 //       #define AO_BINDING_DEPTH 1         ← the bindings of `resources(v, pass, stage)`
+//       #define AO_OUTPUT_FORMAT r8        ← compute shaders: options::output_format
 //       #define AO_BLUR_WEIGHT_0 0.196     ← constants from aogen/params.hpp the pass uses
 //       #line 1 "aogen:SsaoUniforms"
 //       layout(std140, set = 0, binding = 0) uniform SsaoUniforms { ... } u;
@@ -34,11 +35,26 @@
 //              2 normals  sampler2D, float xyz, only for G-buffer normals (a reconstructed-
 //                         normal variant declares no binding 2)
 //              3 noise    sampler2D, the noise tile as floats (rgba32f/rgba16f/rg16f)
-//              4 output   r8 storage image (compute only)
+//              4 output   storage image, options::output_format (r8 by default; compute only)
 //   blur_x, blur_y, blur_box
 //              0 BlurUniforms, 1 depth (full resolution), 2 ao_input sampler2D,
-//              3 output r8 storage image (compute only)
+//              3 output storage image, options::output_format (compute only)
 //   Fragment passes write `layout(location = 0) out float`. resources() lists them all.
+//
+// OPTIONS (codegen::options; generate(v) uses the defaults)
+//   output_format   the format qualifier of compute passes' output image, written as
+//                   `#define AO_OUTPUT_FORMAT <fmt>` and used by entry_compute.glsl:
+//                     r8       (default) one 8-bit unorm channel: Vulkan, desktop GL, D3D, Metal
+//                     rgba8    for OpenGL ES 3.1 (ESSL 310 has no r8 image format, and
+//                              compile.hpp's essl target refuses one): the AO is in .r,
+//                              written as (ao, 0, 0, 1)
+//                     r32f, rgba16f   float targets (both exist in ESSL 310 too)
+//                   Anything else is an aogen::error naming these four. The format of the
+//                   VkImage / texture the caller binds must match. Fragment shaders have no
+//                   output image: the option changes nothing in them (it is still validated).
+//                   Every compute pass of a variant (AO and blurs) gets the same format;
+//                   the blur passes read the AO pass's output's .r through a sampler2D, so
+//                   any of the four feeds them.
 //
 // USAGE
 //     #include <aogen/codegen.hpp>
@@ -49,6 +65,10 @@
 //     }
 //     // while editing templates: read them from a directory instead of the embedded copy
 //     auto dev = aogen::codegen::generate(v, "/path/to/aogen/templates");
+//     // for OpenGL ES (then compile with aogen::compile's essl target)
+//     aogen::codegen::options o;
+//     o.output_format = "rgba8";
+//     auto es = aogen::codegen::generate(v, o);
 //
 // TEMPLATES
 //   The templates (templates/**/*.glsl in the source tree) are embedded at build time:
@@ -58,7 +78,7 @@
 //   generate(v) without a directory then throws.
 //
 // DETERMINISM
-//   Same variant (and same template texts), same bytes: no clocks, paths or hash-map
+//   Same variant, options (and template texts), same bytes: no clocks, paths or hash-map
 //   orders enter the output. A source depends only on what its pass compiles with (the
 //   variant's name is in shader_source::name, not in the text), so variants that differ
 //   only in another pass -- ssao-...-bilateral and ssao-...-box share their AO pass --
@@ -66,8 +86,8 @@
 //   normalised to "\n", as the embedded copy's are.
 //
 // ERRORS
-//   aogen::error: an invalid variant (validate()), an unreadable template file (naming
-//   the path), no embedded templates.
+//   aogen::error: an invalid variant (validate()), an output format not in the list
+//   above, an unreadable template file (naming the path), no embedded templates.
 #pragma once
 
 #include "declare.hpp"
@@ -113,6 +133,28 @@ static_assert(names::distinct(resource_kind_names));
 
 inline const char* to_name(resource_kind k) { return names::name_of(resource_kind_names, k, "resource kind"); }
 
+// ---------------------------------------------------------------------------------
+// Options
+// ---------------------------------------------------------------------------------
+
+// How the sources are generated, beyond the variant (see OPTIONS above).
+struct options {
+    std::string output_format = "r8"; // compute passes' output image: r8, rgba8, r32f, rgba16f
+};
+
+// The output formats options::output_format accepts, in the order error messages list them.
+inline constexpr std::array<std::string_view, 4> output_formats{{"r8", "rgba8", "r32f", "rgba16f"}};
+
+// aogen::error unless every option is valid.
+inline void validate(const options& o)
+{
+    for (std::string_view f : output_formats)
+        if (o.output_format == f) return;
+    std::string valid;
+    for (std::string_view f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f);
+    fail("output format", "'" + o.output_format + "' is not a storage image format aogen writes", "valid: " + valid);
+}
+
 // One descriptor a shader declares. `name` is the role ("uniforms", "depth", "normals",
 // "noise", "ao_input", "output"); the GLSL variable is u_<name> (the uniform block's
 // instance is `u`, its type `block`), and the templates read the binding number from
@@ -123,6 +165,7 @@ struct resource {
     resource_kind kind = resource_kind::combined_image_sampler;
     std::string name;
     std::string block; // uniform buffers: the block's type name (SsaoUniforms, ...)
+    std::string format; // storage images: the format qualifier (options::output_format)
 };
 
 // The stages a variant's pass runs as: compute, or vertex + fragment.
@@ -186,23 +229,24 @@ inline layout::block_desc uniform_block(const variant& v, pass_kind pass)
 }
 
 // The descriptors one shader of a variant's pass declares, by binding.
-inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_stage stage)
+inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_stage stage, const options& o = {})
 {
     validate(v);
+    validate(o);
     detail::require_pass(v, pass);
     detail::require_stage(v, stage);
     if (stage == shader_stage::vertex) return {};
     using k = resource_kind;
     std::vector<resource> r;
-    r.push_back({0, 0, k::uniform_buffer, "uniforms", uniform_block(v, pass).root.name});
-    r.push_back({0, 1, k::combined_image_sampler, "depth", ""});
+    r.push_back({0, 0, k::uniform_buffer, "uniforms", uniform_block(v, pass).root.name, ""});
+    r.push_back({0, 1, k::combined_image_sampler, "depth", "", ""});
     if (pass == pass_kind::ao) {
-        if (v.normals != normal_source::reconstructed) r.push_back({0, 2, k::combined_image_sampler, "normals", ""});
-        r.push_back({0, 3, k::combined_image_sampler, "noise", ""});
-        if (stage == shader_stage::compute) r.push_back({0, 4, k::storage_image, "output", ""});
+        if (v.normals != normal_source::reconstructed) r.push_back({0, 2, k::combined_image_sampler, "normals", "", ""});
+        r.push_back({0, 3, k::combined_image_sampler, "noise", "", ""});
+        if (stage == shader_stage::compute) r.push_back({0, 4, k::storage_image, "output", "", o.output_format});
     } else {
-        r.push_back({0, 2, k::combined_image_sampler, "ao_input", ""});
-        if (stage == shader_stage::compute) r.push_back({0, 3, k::storage_image, "output", ""});
+        r.push_back({0, 2, k::combined_image_sampler, "ao_input", "", ""});
+        if (stage == shader_stage::compute) r.push_back({0, 3, k::storage_image, "output", "", o.output_format});
     }
     return r;
 }
@@ -332,9 +376,11 @@ struct shader_source {
 };
 
 // One shader of one pass, its templates read by `read`.
-inline shader_source generate_shader(const variant& v, pass_kind pass, shader_stage stage, const template_reader& read)
+inline shader_source generate_shader(const variant& v, pass_kind pass, shader_stage stage, const template_reader& read,
+                                     const options& o = {})
 {
     validate(v);
+    validate(o);
     detail::require_pass(v, pass);
     detail::require_stage(v, stage);
     shader_source s;
@@ -342,7 +388,7 @@ inline shader_source generate_shader(const variant& v, pass_kind pass, shader_st
     s.stage = stage;
     s.name = to_name(v) + "." + names::name_of(pass_kind_names, pass, "pass") + "." + file_extension(stage);
     s.files = template_files(v, pass, stage);
-    s.resources = resources(v, pass, stage);
+    s.resources = resources(v, pass, stage, o);
 
     std::string& g = s.glsl;
     g = "#version 450\n#extension GL_GOOGLE_cpp_style_line_directive : require\n";
@@ -356,6 +402,10 @@ inline shader_source generate_shader(const variant& v, pass_kind pass, shader_st
         g += "// Bindings, descriptor set 0:\n";
         for (const resource& r : s.resources)
             g += "#define AO_BINDING_" + detail::upper(r.name) + " " + std::to_string(r.binding) + "\n";
+        if (stage == shader_stage::compute) {
+            g += "// The output image's format (codegen::options):\n";
+            g += "#define AO_OUTPUT_FORMAT " + o.output_format + "\n";
+        }
         const std::vector<define> c = constants(v, pass);
         if (!c.empty()) g += "// Constants from aogen/params.hpp:\n";
         for (const define& d : c) g += "#define " + d.name + " " + d.value + "\n";
@@ -377,29 +427,46 @@ inline shader_source generate_shader(const variant& v, pass_kind pass, shader_st
 
 // Every shader of every pass of `v`, pass by pass in passes(v) order; per pass the
 // compute shader, or the vertex then the fragment shader. Templates from `read`.
-inline std::vector<shader_source> generate(const variant& v, const template_reader& read)
+inline std::vector<shader_source> generate(const variant& v, const template_reader& read, const options& o)
 {
     validate(v);
+    validate(o);
     std::vector<shader_source> out;
     for (pass_kind pass : passes(v))
-        for (shader_stage stage : stages(v)) out.push_back(generate_shader(v, pass, stage, read));
+        for (shader_stage stage : stages(v)) out.push_back(generate_shader(v, pass, stage, read, o));
     return out;
+}
+inline std::vector<shader_source> generate(const variant& v, const template_reader& read)
+{
+    return generate(v, read, options{});
 }
 
 // The same with the templates read from `template_dir` (for developing templates).
+inline std::vector<shader_source> generate(const variant& v, const std::string& template_dir, const options& o)
+{
+    return generate(v, directory_reader(template_dir), o);
+}
 inline std::vector<shader_source> generate(const variant& v, const std::string& template_dir)
 {
-    return generate(v, directory_reader(template_dir));
+    return generate(v, template_dir, options{});
+}
+inline std::vector<shader_source> generate(const variant& v, const char* template_dir, const options& o)
+{
+    return generate(v, std::string(template_dir), o);
 }
 inline std::vector<shader_source> generate(const variant& v, const char* template_dir)
 {
-    return generate(v, std::string(template_dir));
+    return generate(v, std::string(template_dir), options{});
 }
 
 // The same with the embedded templates.
+inline std::vector<shader_source> generate(const variant& v, const options& o)
+{
+    return generate(v, template_reader(embedded_template), o);
+}
 inline std::vector<shader_source> generate(const variant& v)
 {
-    return generate(v, template_reader(embedded_template));
+    return generate(v, options{});
 }
 
 } // namespace aogen::codegen

@@ -3,7 +3,7 @@
 //
 // aogen's codegen (include/aogen/codegen.hpp) writes, before this file: `#version 450`,
 // the pass's #defines (aogen::defines(variant, pass) in aogen/variant.hpp), the binding
-// numbers (AO_BINDING_*) and constants taken from aogen's headers (AO_BLUR_*, AO_PC_*),
+// numbers (AO_BINDING_*), compute passes' output format (AO_OUTPUT_FORMAT) and constants taken from aogen's headers (AO_BLUR_*, AO_PC_*),
 // and the declaration of the pass's uniform block, instance `u`, made from
 // aogen/uniforms.hpp by aogen::layout::declare (std140, set 0, binding 0). The template
 // files follow in a fixed order; none of them declares the uniform block.
@@ -37,6 +37,9 @@
 #endif
 #if defined(AO_STAGE_COMPUTE) && !defined(AO_BINDING_OUTPUT)
 #error aogen: AO_BINDING_OUTPUT is not defined (codegen writes the bindings)
+#endif
+#if defined(AO_STAGE_COMPUTE) && !defined(AO_OUTPUT_FORMAT)
+#error aogen: AO_OUTPUT_FORMAT is not defined (codegen writes the output image's format)
 #endif
 
 // ---- constants --------------------------------------------------------------------------

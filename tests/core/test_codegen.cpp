@@ -334,3 +334,78 @@ TEST_CASE("codegen: invalid input is an aogen::error", "[codegen]")
     CHECK_THAT(error_of([&] { codegen::generate_shader(v, pass_kind::ao, static_cast<shader_stage>(7), codegen::embedded_template); }),
                Contains("shader stage: 7 is not a valid value"));
 }
+
+TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute shaders only", "[codegen]")
+{
+    const std::string dir = AOGEN_TEMPLATE_DIR;
+    for (const variant& v : broad_set()) {
+        const std::vector<shader_source> defaults = codegen::generate(v);
+        // The default options are the old signatures' output, byte for byte.
+        const std::vector<shader_source> explicit_default = codegen::generate(v, codegen::options{});
+        REQUIRE(defaults.size() == explicit_default.size());
+        for (size_t i = 0; i < defaults.size(); ++i) CHECK(defaults[i].glsl == explicit_default[i].glsl);
+        for (const char* format : {"r8", "rgba8", "r32f", "rgba16f"}) {
+            codegen::options o;
+            o.output_format = format;
+            const std::vector<shader_source> s = codegen::generate(v, o);
+            REQUIRE(s.size() == defaults.size());
+            for (size_t i = 0; i < s.size(); ++i) {
+                INFO(s[i].name << " " << format);
+                const std::string line = "#define AO_OUTPUT_FORMAT " + std::string(format) + "\n";
+                if (s[i].stage != shader_stage::compute) {
+                    CHECK(preamble(s[i].glsl).find("AO_OUTPUT_FORMAT") == std::string::npos);
+                    CHECK(s[i].glsl == defaults[i].glsl);
+                    continue;
+                }
+                // One line differs from the default's, in the preamble, and the output
+                // resource carries the format.
+                CHECK(contains_line(preamble(s[i].glsl), line.substr(0, line.size() - 1)));
+                std::string as_r8 = s[i].glsl;
+                as_r8.replace(as_r8.find(line), line.size(), "#define AO_OUTPUT_FORMAT r8\n");
+                CHECK(as_r8 == defaults[i].glsl);
+                CHECK(s[i].resources.back().kind == resource_kind::storage_image);
+                CHECK(s[i].resources.back().format == format);
+                for (size_t r = 0; r + 1 < s[i].resources.size(); ++r) CHECK(s[i].resources[r].format.empty());
+                CHECK(codegen::resources(v, s[i].pass, s[i].stage, o).back().format == format);
+            }
+            // Every overload passes the options on.
+            const std::vector<shader_source> from_dir = codegen::generate(v, dir, o);
+            const std::vector<shader_source> from_cdir = codegen::generate(v, dir.c_str(), o);
+            const std::vector<shader_source> from_reader = codegen::generate(v, codegen::directory_reader(dir), o);
+            REQUIRE(from_dir.size() == s.size());
+            REQUIRE(from_cdir.size() == s.size());
+            REQUIRE(from_reader.size() == s.size());
+            for (size_t i = 0; i < s.size(); ++i) {
+                CHECK(from_dir[i].glsl == s[i].glsl);
+                CHECK(from_cdir[i].glsl == s[i].glsl);
+                CHECK(from_reader[i].glsl == s[i].glsl);
+                CHECK(codegen::generate_shader(v, s[i].pass, s[i].stage, codegen::embedded_template, o).glsl == s[i].glsl);
+            }
+        }
+    }
+    // The entry point uses the define in its image declaration.
+    const std::string entry = codegen::embedded_template("entry_compute.glsl");
+    CHECK(entry.find("layout(set = 0, binding = AO_BINDING_OUTPUT, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;") !=
+          std::string::npos);
+    CHECK(entry.find(", r8)") == std::string::npos);
+}
+
+TEST_CASE("codegen: an output format not in the list is an aogen::error naming the valid ones", "[codegen]")
+{
+    const std::string valid = "(valid: r8, rgba8, r32f, rgba16f)";
+    for (const char* format : {"r16f", "R8", "", "rgba8 ", "r8) uniform image2D x; //"}) {
+        INFO("'" << format << "'");
+        codegen::options o;
+        o.output_format = format;
+        variant compute;
+        variant fragment;
+        fragment.stage = pipeline_stage::fragment;
+        const std::string expected = "output format: '" + std::string(format) + "' is not a storage image format aogen writes " + valid;
+        CHECK(error_of([&] { codegen::generate(compute, o); }) == expected);
+        CHECK(error_of([&] { codegen::generate(fragment, o); }) == expected); // validated even where unused
+        CHECK(error_of([&] { codegen::generate(compute, std::string(AOGEN_TEMPLATE_DIR), o); }) == expected);
+        CHECK(error_of([&] { codegen::resources(compute, pass_kind::ao, shader_stage::compute, o); }) == expected);
+        CHECK(error_of([&] { codegen::validate(o); }) == expected);
+    }
+    CHECK_NOTHROW(codegen::validate(codegen::options{}));
+}
