@@ -1,25 +1,78 @@
-// gtao.glsl -- ground-truth AO (Jimenez et al. 2016), as Taos' GTAOPass (seed 001)
-// describes it. Uniform block: GtaoUniforms (u.proj, u.inv_proj, u.world_to_view,
-// u.radius, u.thickness_bias, u.strength).
+// gtao.glsl -- ground-truth AO (Jimenez et al. 2016), after Taos' GTAOPass (seed 001),
+// with Jimenez's cosine-weighted slice integral in place of the seed's (see "Why not the
+// seed's formula" below). Uniform block: GtaoUniforms (u.proj, u.inv_proj,
+// u.world_to_view, u.radius, u.thickness_bias, u.strength).
 //
 // Per pixel, with P its view-space position, V the direction to the camera and n the
-// normal (normals.glsl), for each of AO_GTAO_SLICES slices -- screen directions at angles
-// s * pi / SLICES, all rotated by the pixel's noise rotation (the jitter):
-//   1. march AO_GTAO_STEPS steps to each side along the direction in screen space, at
+// normal (normals.glsl; it faces V), for each of AO_GTAO_SLICES slices -- screen
+// directions at angles s * pi / SLICES, all rotated by the pixel's noise rotation (the
+// jitter):
+//   1. project n onto the slice plane (spanned by V and the slice direction `side`):
+//      length |n_p|, signed angle n from V, positive toward `side`
+//      (ao_gtao_projected_normal);
+//   2. march AO_GTAO_STEPS steps to each side along the direction in screen space, at
 //      full resolution, step j at j / STEPS of the radius projected at P's depth (capped
 //      at the screen's diagonal), keeping per side the largest cosine between V and the
 //      direction to the sample's view-space point (the highest horizon). Samples off
 //      screen, on background, on the pixel itself, or farther than
 //      radius * (1 + thickness_bias * 10) from P do not raise the horizon;
-//   2. project n onto the slice plane (spanned by V and the slice direction): length
-//      |n_p|, signed angle n from V (positive toward the slice direction);
-//   3. horizon angles h+ = acos(cos+), h- = -acos(cos-), each clamped to [n - pi/2, n + pi/2]
-//      (the hemisphere around the projected normal);
-//   4. the slice's visibility (sin(h+ - n) - sin(h- - n)) / 2, in [0, 1] (seed 001's
-//      cosine-weighted slice integral; 1 for an unoccluded slice).
-// The slices' visibilities are averaged weighted by |n_p| (sum |n_p| v / sum |n_p|, our
-// reading of "weighted by the projected normal length ... averaged across slices": an open
-// plane then gives exactly 1 at every tilt) and the result is raised to u.strength.
+//   3. horizon angles h+ = acos(cos+) in [0, pi], h- = -acos(cos-) in [-pi, 0], each
+//      clamped to [n - pi/2, n + pi/2] (the hemisphere around the normal);
+//   4. the slice integral a(h-, n) + a(h+, n) and its value for an unoccluded slice,
+//      cos n + n sin n (ao_gtao_slice_integral, ao_gtao_slice_unoccluded; below).
+// The visibility is sum |n_p| (a(h-, n) + a(h+, n)) / sum |n_p| (cos n + n sin n) over the
+// slices, raised to u.strength.
+//
+// THE SLICE INTEGRAL (Jimenez et al. 2016, "Practical Real-Time Strategies for Accurate
+// Indirect Occlusion"; the form XeGTAO uses)
+//   aogen's AO is the cosine-weighted visibility (DESIGN.md):
+//       AO = 1/pi * integral over the hemisphere of V(w) (n . w) dw.
+//   Write directions in slice coordinates around V: phi in [0, pi), the slice's angle on
+//   screen, and theta in [-pi, pi], the signed angle of w from V within that slice's
+//   plane (theta < 0 is the half-plane behind `side`). These are spherical coordinates
+//   about V, each slice holding both half-planes, so dw = |sin theta| dtheta dphi; and
+//   n . w = |n_p| cos(theta - n). A heightfield seen from V is visible between the two
+//   horizons, h- <= 0 <= h+, so
+//       AO = 1/pi * integral_0^pi |n_p| * integral_{h-}^{h+} cos(theta - n) |sin theta| dtheta dphi.
+//   The inner integral splits at theta = 0, where |sin theta| changes sign, and both
+//   halves have the same antiderivative form (cos(t - n) sin t = (sin(2t - n) + sin n) / 2):
+//       h >= 0:  integral_0^h cos(t - n) sin t dt
+//       h <= 0:  integral_h^0 cos(t - n) (-sin t) dt
+//       both  =  a(h, n) = (-cos(2h - n) + cos n + 2 h sin n) / 4
+//   and the slice's integral is a(h-, n) + a(h+, n). (Both halves are >= 0 for any h in
+//   the clamped range: the integrand is >= 0 on [n - pi/2, n + pi/2].)
+//   For an unoccluded slice, h+- = n +- pi/2, it is cos n + n sin n: 1 when n = 0, up to
+//   pi/2 for a normal in the view plane -- not 1 per slice; only the integral over phi,
+//   1/pi * integral_0^pi |n_p| (cos n + n sin n) dphi, is 1 (the unoccluded hemisphere).
+//
+// NORMALISING
+//   With finitely many slices, XeGTAO divides sum |n_p| (a- + a+) by the slice count:
+//   right on average over the jitter, but an open plane tilted to the view then gets a
+//   value other than 1 (more or less, depending on where the slices fall). aogen divides
+//   by the same sum for the unoccluded hemisphere, sum |n_p| (cos n + n sin n), which
+//   converges to the same integral as the slices get dense (its exact value is 1), gives
+//   exactly 1 for an open plane at every tilt, slice count and jitter, and is never 0
+//   for a slice that counts (cos n + n sin n >= 1, and slices with |n_p| ~ 0 are skipped).
+//
+// WHY NOT THE SEED'S FORMULA
+//   Seed 001 calls (sin(h+ - n) - sin(h- - n)) / 2 "the cosine-weighted slice integral".
+//   It is 1/2 * integral_{h-}^{h+} cos(theta - n) dtheta: the integral without the
+//   |sin theta| of dw, which weighs every theta of the slice alike, so directions near V
+//   (which cover little solid angle) count as much as those near the view plane, where
+//   occluders sit. It is not the cosine-weighted visibility and reads too light: a floor
+//   point next to an infinite wall (exact 0.5) gives 0.62-0.64 for oblique views with
+//   exact horizons, Jimenez's integral 0.5000; the apex of a 90-degree groove (exact
+//   0.7071): seed 0.82, Jimenez 0.7071. The seed's form is not kept as an option: it
+//   would be a second integral, normalisation and test set to maintain for a result our
+//   definition of AO calls wrong. (Where the scene is not a heightfield seen from V -- a
+//   sphere resting on the floor, with open directions below it -- horizons over-occlude
+//   whichever slice integral is used; that error is the horizon model's, not the integral's.)
+//
+// NUMERICS
+//   Horizon cosines that are NaN or outside [-1, 1] are clamped (NaN: no horizon, -1)
+//   before acos; n comes from atan with a positive x (or is +-pi/2 for a normal in the
+//   view plane); every angle handed to cos/sin is finite. The sums are finite and the
+//   result is in [0, 1]; ao_finalize (core.glsl) catches anything else.
 
 #if !defined(AO_PASS_AO) || !defined(AO_TECHNIQUE_GTAO)
 #error aogen: gtao.glsl is the AO pass of the gtao technique
@@ -45,6 +98,49 @@ float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float ma
     return dot(w, V) / distance;
 }
 
+// The normal projected onto the plane of a slice: (|n_p|, n), n the signed angle of n_p
+// from V, positive toward `side`, in [-pi/2, pi/2]. V and `side` are unit and
+// perpendicular, an orthonormal basis of the slice plane, so n_p = x V + y side with
+// x = dot(n, V), y = dot(n, side); n faces V, so x >= 0. (0, 0) when the normal is
+// (nearly) perpendicular to the slice plane.
+vec2 ao_gtao_projected_normal(vec3 n, vec3 V, vec3 side)
+{
+    float x = dot(n, V);
+    float y = dot(n, side);
+    float n_length = sqrt(x * x + y * y);
+    if (!(n_length > 1e-6)) return vec2(0.0);
+    // atan(y, x) is undefined at x = 0 = y; x <= 0 (rounding) is a normal in the view plane.
+    float n_angle = x > 0.0 ? atan(y, x) : (y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
+    return vec2(n_length, clamp(n_angle, -AO_HALF_PI, AO_HALF_PI));
+}
+
+// a(h, n) = integral from 0 to h of cos(t - n) |sin t| dt (the header's derivation).
+float ao_gtao_arc(float h, float n)
+{
+    return 0.25 * (-cos(2.0 * h - n) + cos(n) + 2.0 * h * sin(n));
+}
+
+// The slice integral a(h-, n) + a(h+, n), without the |n_p| factor, from the horizon
+// cosines of the two sides (-1: no horizon) and the projected normal's angle n.
+float ao_gtao_slice_integral(float n_angle, float cos_behind, float cos_ahead)
+{
+    float n = clamp(n_angle, -AO_HALF_PI, AO_HALF_PI);
+    // ao_is_finite first: clamp() of a NaN is undefined; a NaN horizon is no horizon.
+    float c_ahead = ao_is_finite(cos_ahead) ? clamp(cos_ahead, -1.0, 1.0) : -1.0;
+    float c_behind = ao_is_finite(cos_behind) ? clamp(cos_behind, -1.0, 1.0) : -1.0;
+    // h+ in [0, pi], h- in [-pi, 0]; the clamp keeps h- <= 0 <= h+, as n +- pi/2 straddle 0.
+    float h_ahead = clamp(acos(c_ahead), n - AO_HALF_PI, n + AO_HALF_PI);
+    float h_behind = clamp(-acos(c_behind), n - AO_HALF_PI, n + AO_HALF_PI);
+    return ao_gtao_arc(h_behind, n) + ao_gtao_arc(h_ahead, n);
+}
+
+// The slice integral of an unoccluded slice, h+- = n +- pi/2: cos n + n sin n, in [1, pi/2].
+float ao_gtao_slice_unoccluded(float n_angle)
+{
+    float n = clamp(n_angle, -AO_HALF_PI, AO_HALF_PI);
+    return cos(n) + n * sin(n);
+}
+
 float ao_pass(ivec2 target_pixel)
 {
     ivec2 p = ao_full_pixel(target_pixel);
@@ -68,8 +164,8 @@ float ao_pass(ivec2 target_pixel)
 
     vec2 rotation = ao_noise_rotation(target_pixel);
     vec2 centre = vec2(p) + 0.5;
-    float visibility_sum = 0.0;
-    float weight_sum = 0.0;
+    float visibility_sum = 0.0; // sum of |n_p| (a(h-, n) + a(h+, n))
+    float unoccluded_sum = 0.0; // sum of |n_p| (cos n + n sin n)
     for (int s = 0; s < AO_GTAO_SLICES; ++s) {
         float angle = float(s) * (AO_PI / float(AO_GTAO_SLICES));
         vec2 base = vec2(cos(angle), sin(angle));
@@ -78,13 +174,8 @@ float ao_pass(ivec2 target_pixel)
         vec3 dir_view = vec3(dir.x, -dir.y, 0.0);
         vec3 side = ao_safe_normalize(dir_view - V * dot(dir_view, V), vec3(0.0)); // in the slice plane, perpendicular to V
         if (dot(side, side) < 0.5) continue;
-        vec3 axis = cross(side, V); // the slice plane's normal (unit: side is perpendicular to V)
-        vec3 n_projected = n - axis * dot(n, axis);
-        float n_length = length(n_projected);
-        if (!(n_length > 1e-6)) continue; // the normal is perpendicular to the slice
-        // Signed angle of the projected normal from V, toward `side`; n faces V, so the
-        // cosine dot(n_projected, V) = dot(n, V) >= 0 and the angle is in [-pi/2, pi/2].
-        float n_angle = atan(dot(n_projected, side), max(dot(n_projected, V), 0.0));
+        vec2 projected = ao_gtao_projected_normal(n, V, side); // (|n_p|, n)
+        if (!(projected.x > 0.0)) continue; // the normal is perpendicular to the slice
 
         float cos_ahead = -1.0;
         float cos_behind = -1.0;
@@ -93,14 +184,9 @@ float ao_pass(ivec2 target_pixel)
             cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, p, P, V, max_distance));
             cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, p, P, V, max_distance));
         }
-        float h_ahead = acos(clamp(cos_ahead, -1.0, 1.0));
-        float h_behind = -acos(clamp(cos_behind, -1.0, 1.0));
-        h_ahead = clamp(h_ahead, n_angle - AO_HALF_PI, n_angle + AO_HALF_PI);
-        h_behind = clamp(h_behind, n_angle - AO_HALF_PI, n_angle + AO_HALF_PI);
-        float slice_visibility = 0.5 * (sin(h_ahead - n_angle) - sin(h_behind - n_angle));
-        visibility_sum += n_length * slice_visibility;
-        weight_sum += n_length;
+        visibility_sum += projected.x * ao_gtao_slice_integral(projected.y, cos_behind, cos_ahead);
+        unoccluded_sum += projected.x * ao_gtao_slice_unoccluded(projected.y);
     }
-    float visibility = weight_sum > 1e-6 ? clamp(visibility_sum / weight_sum, 0.0, 1.0) : 1.0;
+    float visibility = unoccluded_sum > 0.0 ? clamp(visibility_sum / unoccluded_sum, 0.0, 1.0) : 1.0;
     return visibility > 0.0 ? pow(visibility, u.strength) : 0.0;
 }
