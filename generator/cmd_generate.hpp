@@ -11,7 +11,8 @@
 //                           static_asserts), binding constants
 // All of it is built in memory first; files are written only when everything compiled,
 // each to a temporary name and renamed, and a file whose bytes would not change is not
-// rewritten. Identical sources (variants sharing an AO pass) are compiled once.
+// rewritten. Identical sources (variants sharing an AO pass) are compiled once. ESSL
+// compute passes write an rgba8 image (ESSL 3.10 has no r8); every other target r8.
 #pragma once
 
 #include "output.hpp"
@@ -91,9 +92,15 @@ public:
         std::string ns_body;
         std::vector<std::string> declared_structs;
         nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-        for (const codegen::shader_source& s : codegen::generate(v)) {
+        const std::vector<codegen::shader_source> sources = codegen::generate(v);
+        const std::vector<codegen::shader_source> essl_sources = codegen::generate(v, essl_options());
+        for (size_t i = 0; i < sources.size(); ++i) {
+            const codegen::shader_source& s = sources[i];
             const shader_stage stage = s.stage;
-            const compile::compiled& c = compiled_once(s.glsl, stage, s.name);
+            const compile::compiled& c = compiled_once(s.glsl, stage, s.name, other_targets());
+            const compile::compiled* essl = wants(compile::target::essl)
+                                                ? &compiled_once(essl_sources[i].glsl, stage, s.name, {compile::target::essl})
+                                                : nullptr;
             const std::string base = name + "/" + names::name_of(pass_kind_names, s.pass, "pass") + "." +
                                      file_extension(s.stage);
             nlohmann::ordered_json pass;
@@ -104,12 +111,14 @@ public:
                 const std::string path = base + "." + target_extension(t);
                 outputs[compile::to_name(t)] = path;
                 if (t == compile::target::spv) files[path] = spirv_bytes(c.spirv);
+                else if (t == compile::target::essl) files[path] = essl->text.at(t);
                 else files[path] = c.text.at(t);
             }
             pass["outputs"] = outputs;
             pass["entry"] = c.refl.entry_points.at(compile::target::spv);
             nlohmann::ordered_json entries;
             for (const auto& [t, e] : c.refl.entry_points) entries[compile::to_name(t)] = e;
+            if (essl) entries[compile::to_name(compile::target::essl)] = essl->refl.entry_points.at(compile::target::essl);
             pass["entry_points"] = entries;
             pass["bindings"] = bindings_json(c.refl);
             if (stage == shader_stage::compute)
@@ -164,13 +173,34 @@ public:
     }
 
 private:
-    std::map<std::string, compile::compiled> cache_; // by GLSL source text
+    std::map<std::pair<std::string, bool>, compile::compiled> cache_; // by GLSL source text and ESSL-only
 
-    const compile::compiled& compiled_once(const std::string& glsl, shader_stage stage, const std::string& name)
+    // ESSL 3.10 has no r8 image format, so the ESSL text of a compute pass comes from a
+    // source whose output image is rgba8 (the AO in .r); every other target keeps r8.
+    static codegen::options essl_options()
     {
-        auto found = cache_.find(glsl);
+        codegen::options o;
+        o.output_format = "rgba8";
+        return o;
+    }
+
+    bool wants(compile::target t) const { return std::find(targets.begin(), targets.end(), t) != targets.end(); }
+
+    std::vector<compile::target> other_targets() const
+    {
+        std::vector<compile::target> out;
+        for (compile::target t : targets)
+            if (t != compile::target::essl) out.push_back(t);
+        return out;
+    }
+
+    const compile::compiled& compiled_once(const std::string& glsl, shader_stage stage, const std::string& name,
+                                           const std::vector<compile::target>& for_targets)
+    {
+        const auto key = std::make_pair(glsl, for_targets.size() == 1 && for_targets[0] == compile::target::essl);
+        auto found = cache_.find(key);
         if (found != cache_.end()) return found->second;
-        return cache_.emplace(glsl, compile::compile(glsl, stage, name, targets)).first->second;
+        return cache_.emplace(key, compile::compile(glsl, stage, name, for_targets)).first->second;
     }
 
     static std::string spirv_bytes(const std::vector<uint32_t>& words)
