@@ -39,15 +39,7 @@ struct compiled_shader {
     std::vector<uint32_t> words;
 };
 
-EShLanguage language_of(shader_stage s)
-{
-    switch (s) {
-    case shader_stage::compute: return EShLangCompute;
-    case shader_stage::vertex: return EShLangVertex;
-    case shader_stage::fragment: return EShLangFragment;
-    }
-    return EShLangCount;
-}
+using aogen_test::language_of;
 
 // glslang + spirv-val, once per distinct (stage, source).
 const compiled_shader& compile(const shader_source& s)

@@ -22,15 +22,7 @@ namespace cc = aogen::compile;
 
 namespace {
 
-EShLanguage language_of(shader_stage s)
-{
-    switch (s) {
-    case shader_stage::compute: return EShLangCompute;
-    case shader_stage::vertex: return EShLangVertex;
-    case shader_stage::fragment: return EShLangFragment;
-    }
-    return EShLangCount;
-}
+using aogen_test::language_of;
 
 // The one storage image a module declares, read back with SPIRV-Cross: its binding and format.
 struct storage_image {
