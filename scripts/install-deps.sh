@@ -12,6 +12,7 @@ packages=(
   glslang-dev glslang-tools   # GLSL -> SPIR-V, and the reflection oracle
   spirv-tools                 # validator and optimizer
   spirv-cross libspirv-cross-c-shared-dev   # SPIR-V -> GLSL/ESSL/HLSL/MSL
+  libembree-dev               # Embree 3: the ray-traced ground truth (bench/truth)
 )
 
 missing=()
