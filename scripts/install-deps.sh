@@ -13,6 +13,7 @@ packages=(
   spirv-tools                 # validator and optimizer
   spirv-cross libspirv-cross-c-shared-dev   # SPIR-V -> GLSL/ESSL/HLSL/MSL
   libembree-dev               # Embree 3: the ray-traced ground truth (bench/truth)
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers   # the Vulkan harness (lavapipe)
 )
 
 missing=()
