@@ -92,7 +92,10 @@ float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float ma
     if (q == centre_pixel) return -1.0;
     float depth = ao_load_depth(q);
     if (ao_is_background(depth)) return -1.0;
-    vec3 w = ao_view_position(ao_pixel_uv(q), depth) - P;
+    // At the sample's own position on the slice line, not its texel's centre: a texel
+    // centre lies off the slice, and on a plane its direction can rise above the plane's
+    // true horizon in the slice (a fronto-parallel plane came out at 0.994, not 1).
+    vec3 w = ao_view_position(pos / vec2(size), depth) - P;
     float distance = length(w);
     if (!(distance > 1e-30 && distance <= max_distance)) return -1.0; // NaN and inf fail too
     return dot(w, V) / distance;

@@ -99,9 +99,7 @@ void check_facing_plane(technique t)
 
 TEST_CASE("vulkan: ssao, a plane facing the camera is unoccluded; background is exactly 1") { check_facing_plane(technique::ssao); }
 
-// KNOWN FAILURE (issue 4): gtao-2x3-full-bilateral gives 0.988 (3/255 below 1) at some
-// pixels of the facing plane; to be investigated. [!mayfail] keeps it visible, not red.
-TEST_CASE("vulkan: gtao, a plane facing the camera is unoccluded; background is exactly 1", "[!mayfail]")
+TEST_CASE("vulkan: gtao, a plane facing the camera is unoccluded; background is exactly 1")
 {
     check_facing_plane(technique::gtao);
 }
