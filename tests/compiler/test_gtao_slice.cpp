@@ -332,7 +332,7 @@ TEST_CASE("gtao slice integral: the shader's a(h-, n) + a(h+, n) against quadrat
     CHECK(evaluate({"ao_gtao_slice_unoccluded(" + lit(half_pi) + ")"})[0] == Approx(half_pi).margin(1e-6));
 }
 
-TEST_CASE("gtao slice integral: horizons outside [-1, 1], NaN and infinity; degenerate projected normals",
+TEST_CASE("gtao slice integral: horizons outside [-1, 1], NaN and infinity, degenerate projected normals",
           "[gtao][glslang]")
 {
     const std::string nan = "uintBitsToFloat(0x7fc00000u)", inf = "uintBitsToFloat(0x7f800000u)";

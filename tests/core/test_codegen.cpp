@@ -63,7 +63,7 @@ bool contains_line(const std::string& text, const std::string& line)
 
 } // namespace
 
-TEST_CASE("codegen: same variant, same bytes; a pass's source depends on its defines only", "[codegen]")
+TEST_CASE("codegen: same variant, same bytes, a pass's source depends on its defines only", "[codegen]")
 {
     std::map<std::string, std::string> by_defines; // a pass's defines -> its source
     std::set<std::string> sources;

@@ -246,7 +246,7 @@ TEST_CASE("declare: glsl for hlsl-cbuffer and wgsl for std140, spelled out", "[d
           "wgsl declaration of P: cannot express std140 rules (valid rules: wgsl-uniform, wgsl-storage)");
 }
 
-TEST_CASE("declare: rule and language names round-trip; unknown names list the valid ones", "[declare][errors]")
+TEST_CASE("declare: rule and language names round-trip, unknown names list the valid ones", "[declare][errors]")
 {
     for (rules r : all_rules) CHECK(rules_from_name(to_name(r)) == r);
     for (language l : all_languages) CHECK(language_from_name(to_name(l)) == l);

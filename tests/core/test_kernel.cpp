@@ -185,7 +185,7 @@ TEST_CASE("kernel count outside 1..256 is rejected with the valid range", "[kern
     CHECK_NOTHROW(kernel::crytek(256, 0));
 }
 
-TEST_CASE("kernel names round-trip; unknown names list the valid ones", "[kernel]")
+TEST_CASE("kernel names round-trip, unknown names list the valid ones", "[kernel]")
 {
     for (auto kind : all_distributions) CHECK(kernel::distribution_from_name(kernel::to_name(kind)) == kind);
     CHECK(kernel::to_name(kernel::distribution::crytek) == "crytek");

@@ -143,7 +143,7 @@ TEST_CASE("hlsl-cbuffer [MS 8]: float1, float1, float3 is 2 x 16 bytes", "[layou
     CHECK(l.size == 32);
 }
 
-TEST_CASE("hlsl-cbuffer [MS 9]: float1 then struct { float4; float1 } is 3 x 16 bytes", "[layout][hlsl]")
+TEST_CASE("hlsl-cbuffer [MS 9]: float1 then struct { float4, float1 } is 3 x 16 bytes", "[layout][hlsl]")
 {
     // float1 Val1; struct { float4 SVal1; // starts a new vector
     //                        float1 SVal2; // starts a new vector } Val2;
@@ -155,7 +155,7 @@ TEST_CASE("hlsl-cbuffer [MS 9]: float1 then struct { float4; float1 } is 3 x 16 
     CHECK(l.size == 48);
 }
 
-TEST_CASE("hlsl-cbuffer [MS 10]: float1 then struct { float1; float4 } is 3 x 16 bytes", "[layout][hlsl]")
+TEST_CASE("hlsl-cbuffer [MS 10]: float1 then struct { float1, float4 } is 3 x 16 bytes", "[layout][hlsl]")
 {
     // float1 Val1; struct { float1 SVal1; // starts a new vector
     //                        float4 SVal2; // starts a new vector } Val2;
@@ -166,7 +166,7 @@ TEST_CASE("hlsl-cbuffer [MS 10]: float1 then struct { float1; float4 } is 3 x 16
     CHECK(l.size == 48);
 }
 
-TEST_CASE("hlsl-cbuffer [MS 11]: struct { float4; float1 } then float1 shares the struct's last register", "[layout][hlsl]")
+TEST_CASE("hlsl-cbuffer [MS 11]: struct { float4, float1 } then float1 shares the struct's last register", "[layout][hlsl]")
 {
     // struct { float4 SVal1; float1 SVal2; } Val1; float1 Val2;
     // [MS] labels this "3 x 16byte elements" (and an older revision comments Val2 "starts a new
@@ -196,7 +196,7 @@ TEST_CASE("hlsl-cbuffer [0003]: float4, float1, float1 go to c0, c1.x, c1.y", "[
     CHECK(l.size == 32);
 }
 
-TEST_CASE("hlsl-cbuffer [0034 cb1]: int i; S s; int j gives 0, 16, 20", "[layout][hlsl]")
+TEST_CASE("hlsl-cbuffer [0034 cb1]: int i, S s, int j gives 0, 16, 20", "[layout][hlsl]")
 {
     // struct S { int v; }; cbuffer cb1 { int i; // offset 0, size 4 (+12)
     //                                    S s;   // offset 16, size 4
@@ -227,7 +227,7 @@ TEST_CASE("hlsl-cbuffer [0034 cb2]: float a1[3] is 36 bytes, stride 16, last ele
     CHECK(l.size == 80);
 }
 
-TEST_CASE("hlsl-cbuffer [0016]: Constants { int i; S s; } has layout size 20", "[layout][hlsl]")
+TEST_CASE("hlsl-cbuffer [0016]: Constants { int i, S s, } has layout size 20", "[layout][hlsl]")
 {
     // struct S { float f; }; cbuffer Constants { int i; S s; };
     // target("dx.Layout", %__cblayout_Constants, 20, 0, 16): i at 0, s at 16, 20 bytes of
@@ -240,7 +240,7 @@ TEST_CASE("hlsl-cbuffer [0016]: Constants { int i; S s; } has layout size 20", "
     CHECK(l.size == 32);
 }
 
-TEST_CASE("hlsl-cbuffer [0016]: OtherConstants { float4 v; int array[10]; } has layout size 164", "[layout][hlsl]")
+TEST_CASE("hlsl-cbuffer [0016]: OtherConstants { float4 v, int array[10], } has layout size 164", "[layout][hlsl]")
 {
     // target("dx.Layout", %__cblayout_OtherConstants, 164, 0, 16): v at 0, array at 16 with
     // 9 padded elements and an unpadded last one: 9 * 16 + 4 = 148; 16 + 148 = 164.

@@ -194,7 +194,7 @@ TEST_CASE("writer: a std140 float array from std::vector<float> uses stride 16",
     CHECK(w.bytes() == expected);
 }
 
-TEST_CASE("writer: the same values give the same bytes; a later write replaces an earlier one", "[writer]")
+TEST_CASE("writer: the same values give the same bytes, a later write replaces an earlier one", "[writer]")
 {
     writer a = params_writer(), b = params_writer();
     a.set("radius", 1.0f);

@@ -131,7 +131,7 @@ TEST_CASE("every texel is a rotation (cos, sin, 0, 1)", "[noise]")
             }
 }
 
-TEST_CASE("noise is deterministic; seeds and patterns differ", "[noise]")
+TEST_CASE("noise is deterministic, seeds and patterns differ", "[noise]")
 {
     for (auto kind : all_patterns) {
         const auto a = noise::generate(kind, 4, 5), again = noise::generate(kind, 4, 5), b = noise::generate(kind, 4, 6);
@@ -161,7 +161,7 @@ TEST_CASE("random tile angles are uniform", "[noise][statistics]")
     for (int q : quarters) CHECK(std::abs(q - 1024) < 111);
 }
 
-TEST_CASE("r2 tile angles are stratified; random ones are not", "[noise][statistics]")
+TEST_CASE("r2 tile angles are stratified, random ones are not", "[noise][statistics]")
 {
     // r2: the N² angles are evenly spaced, so the largest gap is exactly 1/N² turn — the
     // smallest possible for N² angles. A random tile's largest gap is larger (for these
@@ -266,7 +266,7 @@ TEST_CASE("encode rejects malformed tiles", "[noise]")
     CHECK_THROWS_AS(noise::encode(noise::rotations(4, 0), static_cast<noise::encoding>(9)), aogen::error);
 }
 
-TEST_CASE("noise names round-trip; unknown names list the valid ones", "[noise]")
+TEST_CASE("noise names round-trip, unknown names list the valid ones", "[noise]")
 {
     for (auto kind : all_patterns) CHECK(noise::pattern_from_name(noise::to_name(kind)) == kind);
     for (auto format : all_encodings) CHECK(noise::encoding_from_name(noise::to_name(format)) == format);

@@ -97,9 +97,9 @@ void check_facing_plane(technique t)
     }
 }
 
-TEST_CASE("vulkan: ssao, a plane facing the camera is unoccluded; background is exactly 1") { check_facing_plane(technique::ssao); }
+TEST_CASE("vulkan: ssao, a plane facing the camera is unoccluded, background is exactly 1") { check_facing_plane(technique::ssao); }
 
-TEST_CASE("vulkan: gtao, a plane facing the camera is unoccluded; background is exactly 1")
+TEST_CASE("vulkan: gtao, a plane facing the camera is unoccluded, background is exactly 1")
 {
     check_facing_plane(technique::gtao);
 }
