@@ -93,6 +93,13 @@ public:
         return value_->get<std::string>();
     }
 
+    // This value as a number.
+    double as_number() const
+    {
+        if (!value_->is_number()) fail(path_, "is " + kind() + ", not a number", "valid: a number");
+        return value_->get<double>();
+    }
+
     double number(const char* key) const
     {
         const json_reader f = field(key);

@@ -179,6 +179,41 @@ public:
         return ray.tfar == -std::numeric_limits<float>::infinity();
     }
 
+    // The first hit of o + t·d for t in [tnear, tfar] (d need not be unit length: t is in
+    // units of d). `normal` is Embree's geometric normal, unnormalised, oriented as the
+    // primitive's winding (outward for spheres). `geometry` is the index in add_* order.
+    struct hit {
+        bool found = false;
+        double t = 0;
+        vec3 normal;
+        unsigned geometry = 0;
+    };
+    hit intersect(vec3 o, vec3 d, double tnear, double tfar) const
+    {
+        if (!committed_) throw std::logic_error("aogen::truth: intersect() before commit()");
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh{};
+        rh.ray.org_x = float(o.x);
+        rh.ray.org_y = float(o.y);
+        rh.ray.org_z = float(o.z);
+        rh.ray.dir_x = float(d.x);
+        rh.ray.dir_y = float(d.y);
+        rh.ray.dir_z = float(d.z);
+        rh.ray.tnear = float(tnear);
+        rh.ray.tfar = float(tfar);
+        rh.ray.mask = 0xffffffffu;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene_, &context, &rh);
+        hit h;
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
+        h.found = true;
+        h.t = rh.ray.tfar;
+        h.normal = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+        h.geometry = rh.hit.geomID;
+        return h;
+    }
+
     // AO at surface point p with normal n (normalised here).
     estimate ao(vec3 p, vec3 normal, const options& opts = {}) const
     {

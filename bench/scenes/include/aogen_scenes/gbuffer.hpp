@@ -1,0 +1,125 @@
+// aogen_scenes/gbuffer.hpp — a scene's G-buffer, ray-cast with Embree.
+//
+// WHAT
+//   render_gbuffer(scene, opts)  one primary ray per pixel through the pixel centre; per pixel
+//                                the raw depth a GPU would write, the normal and the world-
+//                                space hit position (for the ground truth).
+//   to_gbuffer<G>(g)             G{width, height, depth, normals}: aogen::vulkan::gbuffer
+//                                (this header does not include Vulkan).
+//
+// CONVENTIONS
+//   * Rows are top row first; pixel (x, y) has uv = ((x + ½)/W, (y + ½)/H) and
+//     ndc = (2·uv.x − 1, 1 − 2·uv.y) (math.hpp: uv.y = 0.5 − 0.5·ndc.y).
+//   * Depth is float32 clip-space math with aogen's projection matrix: from the hit's view-
+//     space position v (x, y from the ray, z = −t with the ray's view-space direction having
+//     z = −1, so t is the view distance), clip = P·(v, 1) in float and depth = clip.z/clip.w.
+//     Geometry nearer than `near` is clipped (ray tnear = near); beyond `far` too, except for
+//     reversed_infinite. Background: 1 for standard, 0 for reversed and reversed_infinite.
+//   * normals: RGBA32F, xyz unit length facing the camera (two-sided surfaces are flipped
+//     towards the ray), w = 1 on geometry; (0, 0, 0, 0) on background. World space by
+//     default, view space with normal_space::view; empty with normal_space::none.
+//   * position: world-space hit, xyz doubles per pixel (NaN on background); hit: 1/0;
+//     geometry: the hit's geometry id (scene::build order), or −1.
+#pragma once
+
+#include "scene.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace aogen::scenes {
+
+struct gbuffer {
+    int width = 0, height = 0;
+    std::vector<float> depth;     // width × height raw depth values
+    std::vector<float> normals;   // width × height × 4 (xyz, w = 1 on geometry)
+    normal_space normals_space = normal_space::world;
+    std::vector<double> position; // width × height × 3, world space, NaN on background
+    std::vector<uint8_t> hit;     // width × height, 1 where a ray hit geometry
+    std::vector<int> geometry;    // width × height, geometry id or −1
+};
+
+// Converts to a type with aggregate layout {width, height, depth, normals}, such as
+// aogen::vulkan::gbuffer.
+template <class G>
+G to_gbuffer(const gbuffer& g)
+{
+    return G{g.width, g.height, g.depth, g.normals};
+}
+
+struct gbuffer_options {
+    bool use_scene_normals = true;                 // take the space from scene.renderer.normals
+    normal_space normals = normal_space::world;    // used when use_scene_normals is false
+};
+
+// Ray-casts the G-buffer of `s` into an already built tracer scene `t` (scene::build).
+inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuffer_options& o = {})
+{
+    const camera& c = s.camera;
+    const int W = c.width, H = c.height;
+    gbuffer g;
+    g.width = W, g.height = H;
+    g.normals_space = o.use_scene_normals ? s.renderer.normals : o.normals;
+    const size_t n = size_t(W) * H;
+    g.depth.assign(n, c.background_depth());
+    if (g.normals_space != normal_space::none) g.normals.assign(n * 4, 0.0f);
+    g.position.assign(n * 3, std::numeric_limits<double>::quiet_NaN());
+    g.hit.assign(n, 0);
+    g.geometry.assign(n, -1);
+
+    dvec3 sb, ub, bb;
+    c.basis(sb, ub, bb);
+    const mat4 proj = c.projection_matrix();
+    const bool persp = c.projection == projection_kind::perspective;
+    const double aspect = double(W) / H;
+    const double tfar = (persp && c.depth == depth_convention::reversed_infinite) ? std::numeric_limits<double>::infinity()
+                                                                                : double(c.far);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double ndc_x = 2.0 * (x + 0.5) / W - 1.0;
+            const double ndc_y = 1.0 - 2.0 * (y + 0.5) / H;
+            dvec3 dir_v, org_v; // view space; dir_v.z = −1 so t is the view distance
+            if (persp) {
+                dir_v = {ndc_x * aspect * c.tan_half_fov_y, ndc_y * c.tan_half_fov_y, -1};
+            } else {
+                dir_v = {0, 0, -1};
+                org_v = {c.left + (ndc_x + 1) * 0.5 * (double(c.right) - c.left),
+                         c.bottom + (ndc_y + 1) * 0.5 * (double(c.top) - c.bottom), 0};
+            }
+            const auto to_world = [&](dvec3 v) { return v.x * sb + v.y * ub + v.z * bb; };
+            const dvec3 org = c.eye + to_world(org_v);
+            const dvec3 dir = to_world(dir_v);
+            const truth::scene::hit h = t.intersect(org, dir, c.near, tfar);
+            if (!h.found) continue;
+            const size_t i = size_t(y) * W + x;
+            const dvec3 v = org_v + h.t * dir_v; // view-space hit, z = −t
+            const vec4 clip = proj * vec4{float(v.x), float(v.y), float(v.z), 1.0f};
+            g.depth[i] = clip.z / clip.w;
+            const dvec3 p = org + h.t * dir;
+            g.position[3 * i] = p.x, g.position[3 * i + 1] = p.y, g.position[3 * i + 2] = p.z;
+            g.hit[i] = 1;
+            g.geometry[i] = int(h.geometry);
+            if (g.normals_space != normal_space::none) {
+                dvec3 nw = truth::normalize(h.normal);
+                if (truth::dot(nw, dir) > 0) nw = -1.0 * nw;
+                const dvec3 nn = g.normals_space == normal_space::world
+                                     ? nw
+                                     : dvec3{truth::dot(nw, sb), truth::dot(nw, ub), truth::dot(nw, bb)};
+                g.normals[4 * i] = float(nn.x), g.normals[4 * i + 1] = float(nn.y), g.normals[4 * i + 2] = float(nn.z);
+                g.normals[4 * i + 3] = 1.0f;
+            }
+        }
+    return g;
+}
+
+// Builds the tracer scene and ray-casts the G-buffer.
+inline gbuffer render_gbuffer(const scene& s, const gbuffer_options& o = {})
+{
+    truth::scene t;
+    s.build(t);
+    return render_gbuffer(s, t, o);
+}
+
+} // namespace aogen::scenes

@@ -1,0 +1,244 @@
+// aogen::scenes: scene JSON, built-in scenes, and the ray-cast G-buffer's depth and normals.
+#include <aogen_scenes/gbuffer.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+using namespace aogen;
+using namespace aogen::scenes;
+
+namespace {
+
+// Distance in representable floats between a and b (same sign assumed, both finite).
+int64_t ulps(float a, float b)
+{
+    int32_t ia, ib;
+    std::memcpy(&ia, &a, 4);
+    std::memcpy(&ib, &b, 4);
+    return std::abs(int64_t(ia) - int64_t(ib));
+}
+
+// A plane z_view = −distance facing a camera at the origin that looks down −z.
+scene facing_plane(double distance, depth_convention d)
+{
+    scene s;
+    s.planes = {{{0, 0, -distance}, {0, 0, 1}}};
+    s.camera.eye = {0, 0, 0}, s.camera.target = {0, 0, -1}, s.camera.up = {0, 1, 0};
+    s.camera.depth = d;
+    s.camera.width = 32, s.camera.height = 18;
+    return s;
+}
+
+// The projection's depth formula for view distance z (float math, as a GPU would).
+float expected_depth(depth_convention d, float n, float f, float z)
+{
+    switch (d) {
+    case depth_convention::standard: return (f / (n - f) * -z + n * f / (n - f)) / z;
+    case depth_convention::reversed: return (n / (f - n) * -z + n * f / (f - n)) / z;
+    case depth_convention::reversed_infinite: return n / z;
+    }
+    return 0;
+}
+
+std::string message_of(const std::string& json)
+{
+    try {
+        read_scene(json, "scene.json");
+    } catch (const aogen::error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+const depth_convention all_conventions[] = {depth_convention::standard, depth_convention::reversed,
+                                            depth_convention::reversed_infinite};
+
+} // namespace
+
+TEST_CASE("depth of a facing plane equals the projection formula for each convention", "[scenes][gbuffer]")
+{
+    for (depth_convention d : all_conventions)
+        for (double z : {0.5, 5.0, 37.25}) {
+            const scene s = facing_plane(z, d);
+            const gbuffer g = render_gbuffer(s);
+            const float want = expected_depth(d, s.camera.near, s.camera.far, float(z));
+            int64_t worst = 0;
+            for (size_t i = 0; i < g.depth.size(); ++i) {
+                REQUIRE(g.hit[i] == 1);
+                worst = std::max(worst, ulps(g.depth[i], want));
+            }
+            INFO("convention " << int(d) << ", z " << z << ", want " << want << ", worst " << worst << " ulps");
+            CHECK(worst <= 4);
+        }
+}
+
+TEST_CASE("view z reconstructed from depth with inverse(proj) is the plane distance", "[scenes][gbuffer]")
+{
+    for (depth_convention d : all_conventions)
+        for (double z : {0.5, 5.0}) {
+            const scene s = facing_plane(z, d);
+            const gbuffer g = render_gbuffer(s);
+            const mat4 inv = inverse(s.camera.projection_matrix());
+            for (int y = 0; y < g.height; ++y)
+                for (int x = 0; x < g.width; ++x) {
+                    const float ndc_x = 2.0f * (x + 0.5f) / g.width - 1.0f, ndc_y = 1.0f - 2.0f * (y + 0.5f) / g.height;
+                    const vec4 v = inv * vec4{ndc_x, ndc_y, g.depth[size_t(y) * g.width + x], 1.0f};
+                    const double zv = double(v.z) / v.w;
+                    INFO("convention " << int(d) << ", z " << z << ", pixel " << x << "," << y);
+                    REQUIRE(std::abs(zv + z) <= 1e-5 * z);
+                }
+        }
+}
+
+TEST_CASE("background pixels carry exactly the convention's far value", "[scenes][gbuffer]")
+{
+    for (depth_convention d : all_conventions) {
+        scene s;
+        s.spheres = {{{0, 0, 0}, 0.5}};
+        s.camera.eye = {0, 0, 5}, s.camera.target = {0, 0, 0}, s.camera.up = {0, 1, 0};
+        s.camera.depth = d;
+        const gbuffer g = render_gbuffer(s);
+        const float far_value = d == depth_convention::standard ? 1.0f : 0.0f;
+        int background = 0, geometry = 0;
+        for (size_t i = 0; i < g.depth.size(); ++i) {
+            if (g.hit[i]) {
+                ++geometry;
+                CHECK(g.depth[i] != far_value);
+                continue;
+            }
+            ++background;
+            REQUIRE(g.depth[i] == far_value);
+            REQUIRE(g.normals[4 * i + 3] == 0.0f);
+            REQUIRE(std::isnan(g.position[3 * i]));
+        }
+        CHECK(background > 0);
+        CHECK(geometry > 0);
+    }
+}
+
+TEST_CASE("normals of the sphere point away from its centre", "[scenes][gbuffer]")
+{
+    const scene s = builtin_scene("sphere_on_plane");
+    const gbuffer g = render_gbuffer(s);
+    const dvec3 c = s.spheres[0].centre;
+    const int sphere_id = int(s.planes.size() + s.boxes.size()); // build order: planes, boxes, spheres
+    int count = 0;
+    for (size_t i = 0; i < g.depth.size(); ++i) {
+        if (g.geometry[i] != sphere_id) continue;
+        ++count;
+        const dvec3 p{g.position[3 * i], g.position[3 * i + 1], g.position[3 * i + 2]};
+        const dvec3 radial = truth::normalize(p - c);
+        const dvec3 n{g.normals[4 * i], g.normals[4 * i + 1], g.normals[4 * i + 2]};
+        REQUIRE(std::abs(truth::dot(n, n) - 1) < 1e-5);
+        REQUIRE(truth::dot(n, radial) > 0.9999);
+        REQUIRE(std::abs(std::sqrt(truth::dot(p - c, p - c)) - s.spheres[0].radius) < 1e-4);
+    }
+    CHECK(count > 100);
+}
+
+TEST_CASE("view-space normals are the world normals in the camera basis", "[scenes][gbuffer]")
+{
+    scene s = facing_plane(3.0, depth_convention::standard);
+    s.camera.eye = {1, 2, 3}, s.camera.target = {1, 2, -1}; // still looks down −z, plane z = −3
+    s.planes[0].point = {0, 0, 0};
+    gbuffer_options o;
+    o.use_scene_normals = false;
+    o.normals = normal_space::view;
+    const gbuffer g = render_gbuffer(s, o);
+    for (size_t i = 0; i < g.depth.size(); ++i) {
+        REQUIRE(g.hit[i] == 1);
+        CHECK(g.normals[4 * i + 2] == Approx(1.0f));
+    }
+}
+
+TEST_CASE("every built-in scene instantiates and has geometry on screen", "[scenes][builtin]")
+{
+    for (const std::string& name : builtin_scene_names()) {
+        INFO(name);
+        const scene s = builtin_scene(name);
+        CHECK(s.name == name);
+        CHECK(s.camera.width == 160);
+        CHECK(s.camera.height == 90);
+        const gbuffer g = render_gbuffer(s);
+        REQUIRE(g.depth.size() == size_t(160) * 90);
+        REQUIRE(g.normals.size() == size_t(160) * 90 * 4);
+        size_t hits = 0;
+        for (uint8_t h : g.hit) hits += h;
+        CHECK(hits > 0);
+        for (size_t i = 0; i < g.depth.size(); ++i)
+            if (g.hit[i]) {
+                REQUIRE(g.depth[i] >= 0.0f);
+                REQUIRE(g.depth[i] <= 1.0f);
+            }
+    }
+}
+
+TEST_CASE("an unknown built-in scene name lists the valid names", "[scenes][builtin]")
+{
+    CHECK_THROWS_WITH(builtin_scene("sphere"), Catch::Contains("sphere_on_plane") && Catch::Contains("plank") &&
+                                                   Catch::Contains("\"sphere\""));
+}
+
+TEST_CASE("a JSON scene parses into the description", "[scenes][json]")
+{
+    const scene s = read_scene(R"({
+        "name": "test",
+        "geometry": [
+            {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]},
+            {"type": "box", "min": [0, 0, 0], "max": [1, 1, 1]},
+            {"type": "sphere", "centre": [3, 0, 1], "radius": 1},
+            {"type": "quad", "corner": [0, 5, 0], "e1": [1, 0, 0], "e2": [0, 0, 1]}
+        ],
+        "camera": {"projection": "orthographic", "left": -4, "right": 4, "bottom": -2, "top": 2,
+                   "near": 0, "far": 50, "depth": "reversed", "width": 64, "height": 32,
+                   "eye": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, 1]},
+        "ao_radius": 0.5,
+        "renderer": {"normals": "view", "point_cloud": true}
+    })",
+                               "scene.json");
+    CHECK(s.name == "test");
+    CHECK(s.planes.size() == 1);
+    CHECK(s.boxes.size() == 1);
+    CHECK(s.spheres.size() == 1);
+    CHECK(s.quads.size() == 1);
+    CHECK(s.camera.projection == projection_kind::orthographic);
+    CHECK(s.camera.depth == depth_convention::reversed);
+    CHECK(s.camera.width == 64);
+    CHECK(s.ao_radius == 0.5);
+    CHECK(s.renderer.normals == normal_space::view);
+    CHECK(s.renderer.point_cloud);
+    const gbuffer g = render_gbuffer(s);
+    size_t hits = 0;
+    for (uint8_t h : g.hit) hits += h;
+    CHECK(hits > 0);
+}
+
+TEST_CASE("JSON scene errors name the file and the field", "[scenes][json]")
+{
+    const std::string geo = R"("geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}])";
+    std::string m = message_of("{" + geo + R"(, "camera": {"fov": 60}})");
+    CHECK_THAT(m, Catch::Contains("scene.json.camera.fov") && Catch::Contains("not a known key") &&
+                      Catch::Contains("tan_half_fov_y"));
+    m = message_of("{" + geo + R"(, "camera": {"depth": "reverse"}})");
+    CHECK_THAT(m, Catch::Contains("scene.json.camera.depth") && Catch::Contains("reversed_infinite"));
+    m = message_of("{" + geo + R"(, "camera": {"width": 0}})");
+    CHECK_THAT(m, Catch::Contains("scene.json.camera.width") && Catch::Contains("1..16384"));
+    m = message_of("{" + geo + R"(, "colour": 1})");
+    CHECK_THAT(m, Catch::Contains("scene.json.colour") && Catch::Contains("not a known key"));
+    m = message_of(R"({"geometry": [{"type": "mesh", "file": "a.obj"}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].type") && Catch::Contains("meshes: not supported yet"));
+    m = message_of(R"({"geometry": [{"type": "sphere", "centre": [0, 0], "radius": 1}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].centre") && Catch::Contains("[x, y, z]"));
+    m = message_of(R"({"geometry": [{"type": "sphere", "centre": [0, 0, 0], "radius": "big"}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].radius") && Catch::Contains("not a number"));
+    m = message_of(R"({"geometry": [{"type": "cone"}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].type") && Catch::Contains("plane, box, sphere, quad"));
+    m = message_of(R"({"geometry": []})");
+    CHECK_THAT(m, Catch::Contains("scene.json: geometry") && Catch::Contains("is empty"));
+    m = message_of("{not json");
+    CHECK_THAT(m, Catch::Contains("scene.json") && Catch::Contains("not valid JSON"));
+}
