@@ -372,6 +372,19 @@ private:
         vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
     }
 
+    // Device memory for `mr` with `properties`, freed when `sc` ends.
+    VkDeviceMemory allocate(scope& sc, const VkMemoryRequirements& mr, VkMemoryPropertyFlags properties)
+    {
+        VkDevice d = ctx_.device();
+        VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        ai.allocationSize = mr.size;
+        ai.memoryTypeIndex = ctx_.memory_type(mr.memoryTypeBits, properties);
+        VkDeviceMemory m;
+        check(vkAllocateMemory(d, &ai, nullptr, &m), "vkAllocateMemory");
+        sc.add([d, m] { vkFreeMemory(d, m, nullptr); });
+        return m;
+    }
+
     buffer make_buffer(scope& sc, size_t size, VkBufferUsageFlags usage)
     {
         VkDevice d = ctx_.device();
@@ -384,12 +397,7 @@ private:
         sc.add([d, h] { vkDestroyBuffer(d, h, nullptr); });
         VkMemoryRequirements mr;
         vkGetBufferMemoryRequirements(d, r.handle, &mr);
-        VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        ai.allocationSize = mr.size;
-        ai.memoryTypeIndex = ctx_.memory_type(mr.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        VkDeviceMemory m;
-        check(vkAllocateMemory(d, &ai, nullptr, &m), "vkAllocateMemory");
-        sc.add([d, m] { vkFreeMemory(d, m, nullptr); });
+        VkDeviceMemory m = allocate(sc, mr, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
         check(vkBindBufferMemory(d, r.handle, m, 0), "vkBindBufferMemory");
         check(vkMapMemory(d, m, 0, VK_WHOLE_SIZE, 0, &r.mapped), "vkMapMemory");
         return r;
@@ -414,12 +422,7 @@ private:
         sc.add([d, h2] { vkDestroyImage(d, h2, nullptr); });
         VkMemoryRequirements mr;
         vkGetImageMemoryRequirements(d, r.handle, &mr);
-        VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        ai.allocationSize = mr.size;
-        ai.memoryTypeIndex = ctx_.memory_type(mr.memoryTypeBits, 0);
-        VkDeviceMemory m;
-        check(vkAllocateMemory(d, &ai, nullptr, &m), "vkAllocateMemory");
-        sc.add([d, m] { vkFreeMemory(d, m, nullptr); });
+        VkDeviceMemory m = allocate(sc, mr, 0);
         check(vkBindImageMemory(d, r.handle, m, 0), "vkBindImageMemory");
         VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         vi.image = r.handle;
