@@ -1,5 +1,5 @@
 // Error metrics against values worked out by hand.
-#include "../../bench/report/metrics.hpp"
+#include <aogen_report/metrics.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// bench/report/metrics.hpp — how far an AO image is from the ground truth.
+// aogen_report/metrics.hpp — how far an AO image is from the ground truth.
 //
 // WHAT
 //   compare(ao, truth, valid) measures a variant's AO against ray-traced ground truth

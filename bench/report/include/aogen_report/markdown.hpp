@@ -1,0 +1,158 @@
+// aogen_report/markdown.hpp — report.md: the tables a person reads.
+//
+//     std::string text = aogen_report::report_markdown(data, meta, strip_files);
+//
+// Sections: how to read it; the variants sorted by time with default and calibrated RMSE
+// and Pareto marks; the scenes with the reference's own noise; per scene, every variant's
+// metrics; the feature saving; what was skipped and why. `strip_files` maps a scene name
+// to its image strip (relative path) and the variants in its rows.
+#pragma once
+
+#include "results_json.hpp"
+
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace aogen_report {
+
+struct strip_file {
+    std::string path;                  // relative to report.md
+    std::vector<std::string> variants; // one per row
+};
+
+namespace detail {
+
+inline std::string fixed(double x, int digits)
+{
+    if (!std::isfinite(x)) return "–";
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
+    return buffer;
+}
+
+inline std::string ratio(double a, double b) { return (std::isfinite(a) && std::isfinite(b) && b > 0) ? fixed(a / b, 2) + "×" : "–"; }
+
+// Variant indices, fastest first (unmeasured last, then by name), so tables are stable.
+inline std::vector<size_t> by_time(const std::vector<variant_record>& v)
+{
+    std::vector<size_t> order(v.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        const bool fa = std::isfinite(v[a].ms), fb = std::isfinite(v[b].ms);
+        if (fa != fb) return fa;
+        if (fa && v[a].ms != v[b].ms) return v[a].ms < v[b].ms;
+        return v[a].name < v[b].name;
+    });
+    return order;
+}
+
+} // namespace detail
+
+inline std::string report_markdown(const report_data& d, const report_meta& meta, const std::map<std::string, strip_file>& strips)
+{
+    using detail::fixed;
+    std::ostringstream md;
+    const scene_record& first = d.scenes.front();
+    md << "# aogen report: AO error against run time\n\n";
+    md << "- Device: **" << d.device << "**\n";
+    md << "- " << d.scenes.size() << " scenes at " << first.scene.camera.width << "×" << first.scene.camera.height << ", " << d.variants.size()
+       << " variants\n";
+    md << "- Reference: Embree, " << d.grid * d.grid << " stratified cosine-distributed rays per pixel\n";
+    md << "- Times: median of " << d.runs << " runs after " << d.warmup << " warm-up, GPU timestamps around every pass, summed over the chain\n";
+    md << "- Command: `" << meta.command << "`\n\n";
+    md << "**How to read it.** Error is the RMSE of the variant's AO against the ray-traced reference over the pixels that show "
+          "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution AO is compared after "
+          "nearest upsampling to full resolution. *Default*: the variant's default parameters (seed presets, lengths scaled to "
+          "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
+          "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median. "
+          "★ marks a Pareto-optimal variant: no other variant is both at least as fast and at least as accurate.\n\n";
+    md << "![error against time](error_vs_time.png)\n\n";
+
+    md << "## Variants, fastest first\n\n";
+    md << "| variant | ms | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | NaN/Inf |\n";
+    md << "|---|---:|---:|:-:|---:|:-:|---:|---:|\n";
+    for (size_t i : detail::by_time(d.variants)) {
+        const variant_record& v = d.variants[i];
+        md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | "
+           << fixed(v.rmse_calibrated, 4) << " | " << (v.pareto_calibrated ? "★" : "") << " | " << v.ao_instructions << " | " << v.non_finite
+           << " |\n";
+    }
+
+    md << "\n## Scenes\n\n";
+    md << "The reference's own noise (RMS of the per-pixel Monte-Carlo standard error) adds to a variant's RMSE in quadrature; "
+          "it must stay well below the errors above.\n\n";
+    md << "| scene | size | AO radius | valid pixels | mean reference AO | reference noise | strip |\n";
+    md << "|---|---|---:|---:|---:|---:|---|\n";
+    for (const scene_record& s : d.scenes) {
+        const auto strip = strips.find(s.scene.name);
+        md << "| " << s.scene.name << (s.scene.renderer.point_cloud ? " (point cloud)" : "") << " | " << s.scene.camera.width << "×"
+           << s.scene.camera.height << " | " << fixed(s.scene.ao_radius, 3) << " | " << s.valid_pixels << " | " << fixed(s.truth_mean, 4)
+           << " | " << fixed(s.truth.noise_rms, 4) << " | " << (strip == strips.end() ? "" : "[png](" + strip->second.path + ")") << " |\n";
+    }
+    double best = std::numeric_limits<double>::infinity(), noise = 0;
+    for (const variant_record& v : d.variants)
+        if (std::isfinite(v.rmse_calibrated)) best = std::min(best, v.rmse_calibrated);
+    for (const scene_record& s : d.scenes) noise = std::max(noise, s.truth.noise_rms);
+    md << "\nLargest reference noise: " << fixed(noise, 4) << "; smallest mean calibrated RMSE of any variant: " << fixed(best, 4) << ".\n\n";
+
+    md << "Each scene's strip shows, per row, reference | variant | |variant − reference| (black 0, yellow ≥ " << fixed(heat_full_scale, 2)
+       << "; background in blue-grey), for the variants Pareto-optimal by calibrated error.\n";
+
+    md << "\n## Per scene\n\n";
+    md << "Columns: median ms; default RMSE, MAE, mean signed error (> 0: too light), 99th-percentile |error|; calibrated RMSE "
+          "and its power p; NaN/Inf pixels.\n";
+    for (size_t s = 0; s < d.scenes.size(); ++s) {
+        md << "\n### " << d.scenes[s].scene.name << "\n\n";
+        const auto strip = strips.find(d.scenes[s].scene.name);
+        if (strip != strips.end()) {
+            md << "![" << d.scenes[s].scene.name << ": reference | variant | error](" << strip->second.path << ")\n\nRows: ";
+            for (size_t k = 0; k < strip->second.variants.size(); ++k) md << (k ? ", " : "") << "`" << strip->second.variants[k] << "`";
+            md << ".\n\n";
+        }
+        md << "| variant | ms | RMSE | MAE | signed | p99 | RMSE cal. | p | NaN/Inf |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (size_t i : detail::by_time(d.variants)) {
+            const variant_record& v = d.variants[i];
+            const run_record& r = v.runs[s];
+            if (!r.ran()) continue;
+            md << "| `" << v.name << "` | " << fixed(r.ms, 3) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
+               << fixed(r.plain.mean_signed, 4) << " | " << fixed(r.plain.p99_abs, 3) << " | " << fixed(r.calibrated.rmse, 4) << " | "
+               << fixed(r.power, 2) << " | " << r.plain.non_finite << " |\n";
+        }
+    }
+
+    md << "\n## Leaving features out\n\n";
+    if (d.savings.empty()) md << "No SSAO variant without the point-cloud fallback, or no mesh-only scene: nothing to compare.\n";
+    else {
+        md << "On the mesh-only scenes, each SSAO variant as scene selection makes it (the point-cloud fallback left out: the "
+              "scenes have no point clouds) beside the same variant with the fallback compiled in. Instructions are the AO shader's "
+              "SPIR-V after spirv-opt; time is the median over the mesh-only scenes.\n\n";
+        md << "| selected | AO instructions (everything on) | ratio | ms (everything on) | ratio | RMSE (everything on) |\n";
+        md << "|---|---:|---:|---:|---:|---:|\n";
+        for (const feature_saving& f : d.savings)
+            md << "| `" << f.selected << "` | " << f.selected_instructions << " (" << f.everything_on_instructions << ") | "
+               << detail::ratio(f.selected_instructions, f.everything_on_instructions) << " | " << fixed(f.selected_ms, 3) << " ("
+               << fixed(f.everything_on_ms, 3) << ") | " << detail::ratio(f.selected_ms, f.everything_on_ms) << " | " << fixed(f.selected_rmse, 4)
+               << " (" << fixed(f.everything_on_rmse, 4) << ") |\n";
+        md << "\nLeft out by selection: ";
+        for (size_t i = 0; i < d.savings.front().left_out.size(); ++i) md << (i ? "; " : "") << d.savings.front().left_out[i];
+        md << ".\n";
+    }
+
+    std::map<std::string, std::vector<std::string>> skipped; // reason → "variant on scene"
+    for (const variant_record& v : d.variants)
+        for (size_t s = 0; s < v.runs.size(); ++s)
+            if (!v.runs[s].ran()) skipped[v.runs[s].skipped].push_back("`" + v.name + "` on " + d.scenes[s].scene.name);
+    if (!skipped.empty()) {
+        md << "\n## Not run\n\n";
+        for (const auto& entry : skipped) {
+            md << "- " << entry.first << ": " << entry.second.size() << (entry.second.size() == 1 ? " run" : " runs") << " (";
+            for (size_t i = 0; i < entry.second.size() && i < 3; ++i) md << (i ? ", " : "") << entry.second[i];
+            md << (entry.second.size() > 3 ? ", …" : "") << ")\n";
+        }
+    }
+    return md.str();
+}
+
+} // namespace aogen_report

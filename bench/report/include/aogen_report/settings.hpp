@@ -1,0 +1,63 @@
+// aogen_report/settings.hpp — what the report runs a variant with on a scene: "the
+// variant's default parameters", scaled to the scene's AO radius, and whether the variant
+// can run on the scene at all.
+//
+//     std::string why = aogen_report::cannot_run(v, scene);        // "" when it can
+//     aogen::vulkan::chain_settings s = aogen_report::default_settings(v, scene);
+//
+// Defaults are the seed presets (aogen/params.hpp): Taos' SSAO for the strength output
+// form and Unique Engine's for power/intensity, Taos' GTAO (strength 2) — with every
+// length scaled to the scene: the SSAO hemisphere and the GTAO radius are the scene's AO
+// radius R (the ground truth's radius), SSAO's bias keeps the presets' ratio to the
+// radius (0.025 at 0.5: 5 % of R), and the linear bilateral depth term's sharpness
+// (10 per unit at R = 1) scales with 1/R, so every scene is seen at the same relative scale.
+#pragma once
+
+#include <aogen/params.hpp>
+#include <aogen/vulkan/chain.hpp>
+#include <aogen_scenes/scene.hpp>
+
+#include <string>
+
+namespace aogen_report {
+
+// The scene's camera with the variant's depth convention: the same picture, the depth
+// buffer written the way the variant reads it.
+inline aogen::scenes::scene for_variant(aogen::scenes::scene s, const aogen::variant& v)
+{
+    s.camera.depth = v.depth;
+    return s;
+}
+
+// Why `v` cannot run on `s` ("" when it can): its projection is not the camera's, or it
+// reads a normal buffer the renderer does not have.
+inline std::string cannot_run(const aogen::variant& v, const aogen::scenes::scene& s)
+{
+    const bool ortho_camera = s.camera.projection == aogen::scenes::projection_kind::orthographic;
+    if ((v.projection == aogen::projection_kind::orthographic) != ortho_camera)
+        return std::string("the variant is ") + (ortho_camera ? "perspective" : "orthographic") + ", the camera is not";
+    if (v.normals != aogen::normal_source::reconstructed && s.renderer.normals == aogen::scenes::normal_space::none)
+        return "the variant reads a normal buffer; the scene's renderer has none";
+    return "";
+}
+
+inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, const aogen::scenes::scene& s)
+{
+    const float R = float(s.ao_radius);
+    aogen::vulkan::chain_settings c;
+    const aogen::ssao_preset ssao = v.output == aogen::ssao_output::power_intensity ? aogen::presets::unique_engine_ssao()
+                                                                                    : aogen::presets::taos_ssao();
+    c.ssao = ssao.ssao;
+    c.ssao.bias = c.ssao.bias / c.ssao.radius * R;
+    c.ssao.radius = R;
+    c.gtao = aogen::presets::taos_gtao().gtao;
+    c.gtao.radius = R;
+    c.blur = v.blur_depth == aogen::bilateral_depth::seed_raw ? aogen::presets::taos_quality_blur() : aogen::blur_params{};
+    c.blur.linear_sharpness = c.blur.linear_sharpness / R;
+    const aogen::scenes::scene seen = for_variant(s, v);
+    c.camera.world_to_view = seen.camera.world_to_view();
+    c.camera.proj = seen.camera.projection_matrix();
+    return c;
+}
+
+} // namespace aogen_report

@@ -1,0 +1,174 @@
+// aogen_report — how far each AO variant is from the ray-traced truth, and what it costs.
+//
+//     aogen_report [--scenes crease,room,my_scene.json] [--variants spec.json | NAME,NAME]
+//                  [--size 320x180] [--rays 4096] [--runs 5] [--device NAME] [--out out/report]
+//
+// Writes into --out: report.md (the tables), results.json (every number),
+// error_vs_time.png (bench/report/plot_error_vs_time.py, python3-matplotlib) and
+// strips/<scene>.png (reference | variant | |error| for the Pareto-optimal variants).
+// Progress goes to stderr. A bad argument, scene or variant is one line on stderr and
+// exit status 1 (2 for command-line syntax), before anything is written; every file is
+// written to a temporary name and renamed.
+#include <aogen_report/markdown.hpp>
+
+#include <aogen/matrix.hpp>
+#include <generator/output.hpp>
+#include <generator/variant_json.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+using aogen::cli::json_reader;
+
+std::vector<std::string> comma_list(const std::string& text)
+{
+    std::vector<std::string> out;
+    for (const std::string& item : aogen::detail::split(text, ','))
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+bool ends_with(const std::string& s, const std::string& suffix)
+{
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Built-in names or scene JSON files; empty: every built-in scene.
+std::vector<aogen::scenes::scene> load_scenes(const std::string& list)
+{
+    std::vector<aogen::scenes::scene> out;
+    const std::vector<std::string> items = list.empty() ? aogen::scenes::builtin_scene_names() : comma_list(list);
+    for (const std::string& item : items) out.push_back(ends_with(item, ".json") ? aogen::scenes::load_scene(item) : aogen::scenes::builtin_scene(item));
+    return out;
+}
+
+// A variant spec file (see `aogen generate --variants`) or canonical names; empty: the
+// default matrix.
+std::vector<aogen::variant> load_variants(const std::string& list)
+{
+    if (list.empty()) return aogen::default_matrix();
+    if (ends_with(list, ".json")) {
+        const nlohmann::json doc = json_reader::parse(aogen::cli::read_file(list), list);
+        return aogen::cli::variants_from_json(json_reader(doc, list));
+    }
+    std::vector<aogen::variant> out;
+    for (const std::string& name : comma_list(list)) aogen::append_unique(out, aogen::variant_from_name(name));
+    return out;
+}
+
+void parse_size(const std::string& text, int& width, int& height)
+{
+    const std::vector<std::string> parts = aogen::detail::split(text, 'x');
+    const auto number = [&](const std::string& s) {
+        if (s.empty() || s.size() > 5 || s.find_first_not_of("0123456789") != std::string::npos) return -1;
+        return std::stoi(s);
+    };
+    width = parts.size() == 2 ? number(parts[0]) : -1;
+    height = parts.size() == 2 ? number(parts[1]) : -1;
+    if (width < 8 || height < 8 || width > 4096 || height > 4096)
+        aogen::fail("--size", "\"" + text + "\" is not a size", "valid: WIDTHxHEIGHT, each 8..4096, e.g. 320x180");
+}
+
+// Rays per pixel = grid², grid even (stratum pairs) and >= 32: at least 1024 rays.
+int grid_for_rays(int rays)
+{
+    for (int g = 32; g <= 256; g += 2)
+        if (g * g == rays) return g;
+    aogen::fail("--rays", std::to_string(rays) + " is not a valid ray count", "valid: the square of an even number from 32 to 256: 1024, 1156, ..., 4096, ..., 65536");
+}
+
+// Per scene, the variants Pareto-optimal by calibrated error that ran on it (fastest
+// first, at most 8): reference | variant | |error|.
+std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report::report_data& d, const std::filesystem::path& out)
+{
+    std::map<std::string, aogen_report::strip_file> files;
+    for (size_t s = 0; s < d.scenes.size(); ++s) {
+        const aogen_report::scene_record& scene = d.scenes[s];
+        aogen_report::strip strip(scene.truth.width, scene.truth.height);
+        aogen_report::strip_file file{"strips/" + scene.scene.name + ".png", {}};
+        for (size_t i : aogen_report::detail::by_time(d.variants)) {
+            const aogen_report::variant_record& v = d.variants[i];
+            if (!v.pareto_calibrated || !v.runs[s].ran() || file.variants.size() == 8) continue;
+            strip.add_row(scene.truth.ao, v.runs[s].ao, scene.truth.valid);
+            file.variants.push_back(v.name);
+        }
+        if (file.variants.empty()) continue;
+        aogen::cli::write_file_atomically(out / file.path, aogen_report::encode_png(strip.image()));
+        files[scene.scene.name] = file;
+    }
+    return files;
+}
+
+void plot(const std::string& script, const std::filesystem::path& out)
+{
+    const std::string command = std::string(AOGEN_REPORT_PYTHON) + " '" + script + "' '" + (out / "results.json").string() + "' '" + (out / "error_vs_time.png").string() + "'";
+    if (std::system(command.c_str()) != 0)
+        aogen::fail("error_vs_time.png", "the plot script failed: " + command, "valid: python3 with matplotlib (python3-matplotlib)");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"aogen_report: each AO variant's error against ray-traced ground truth, and its run time"};
+    std::string scenes, variants, size = "320x180", out = "out/report", device, plot_script = AOGEN_REPORT_PLOT_SCRIPT;
+    int rays = 4096, runs = 5, warmup = 1;
+    bool validation = false, no_saving = false;
+    app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)");
+    app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)");
+    app.add_option("--size", size, "every scene's resolution, WIDTHxHEIGHT")->capture_default_str();
+    app.add_option("--rays", rays, "reference rays per pixel: the square of an even number >= 32")->capture_default_str();
+    app.add_option("--runs", runs, "timed runs per variant and scene (median)")->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--warmup", warmup, "untimed runs first")->capture_default_str()->check(CLI::Range(0, 1000));
+    app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");
+    app.add_option("--out", out, "the report folder")->capture_default_str();
+    app.add_option("--plot-script", plot_script, "the error-against-time plot script")->capture_default_str();
+    app.add_flag("--validation", validation, "enable the Khronos validation layer");
+    app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        aogen_report::report_settings s;
+        parse_size(size, s.width, s.height);
+        s.grid = grid_for_rays(rays);
+        s.runs = runs, s.warmup = warmup;
+        s.device.name = device, s.device.validation = validation;
+        s.feature_saving = !no_saving;
+        s.scenes = load_scenes(scenes);
+        s.variants = load_variants(variants);
+        s.progress = [&](const std::string& line) {
+            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::cerr << "aogen_report " << std::fixed << std::setprecision(1) << t << "s " << line << std::endl;
+        };
+        const aogen_report::report_data d = aogen_report::run_report(s);
+
+        std::ostringstream command;
+        for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
+        const aogen_report::report_meta meta{command.str()};
+        const std::filesystem::path folder(out);
+        aogen::cli::write_file_atomically(folder / "results.json", aogen_report::results_json(d, meta));
+        const auto strips = write_strips(d, folder);
+        aogen::cli::write_file_atomically(folder / "report.md", aogen_report::report_markdown(d, meta, strips));
+        plot(plot_script, folder);
+        s.progress("wrote " + (folder / "report.md").string());
+    } catch (const aogen::error& e) {
+        std::cerr << "aogen_report: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "aogen_report: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
