@@ -6,6 +6,8 @@
 //                                space hit position (for the ground truth).
 //   to_gbuffer<G>(g)             G{width, height, depth, normals}: aogen::vulkan::gbuffer
 //                                (this header does not include Vulkan).
+//   stored_depth(d, format)      the value a shader reads back after the GPU stored d in a
+//                                depth buffer of that format.
 //
 // CONVENTIONS
 //   * Rows are top row first; pixel (x, y) has uv = ((x + ½)/W, (y + ½)/H) and
@@ -15,6 +17,10 @@
 //     z = −1, so t is the view distance), clip = P·(v, 1) in float and depth = clip.z/clip.w.
 //     Geometry nearer than `near` is clipped (ray tnear = near); beyond `far` too, except for
 //     reversed_infinite. Background: 1 for standard, 0 for reversed and reversed_infinite.
+//   * Depth buffer format (scene.renderer.depth_buffer): d32_sfloat keeps the float; for
+//     d24_unorm and d16_unorm (n bits) depth is quantised as the GPU stores it and read back:
+//     k = round-to-nearest(d·(2ⁿ − 1)) (ties up), then float(k)/float(2ⁿ − 1). 0 and 1 — the
+//     background — stay exact. `position` keeps the exact hit (the ground truth's point).
 //   * normals: RGBA32F, xyz unit length facing the camera (two-sided surfaces are flipped
 //     towards the ray), w = 1 on geometry; (0, 0, 0, 0) on background. World space by
 //     default, view space with normal_space::view; empty with normal_space::none.
@@ -24,6 +30,7 @@
 
 #include "scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -47,6 +54,16 @@ template <class G>
 G to_gbuffer(const gbuffer& g)
 {
     return G{g.width, g.height, g.depth, g.normals};
+}
+
+// Vulkan's float → UNORM conversion, then UNORM → float, as the shader sees it. d·(2ⁿ − 1) is
+// exact in double (24 × 24 bits), so the rounding is the only one before the division.
+inline float stored_depth(float d, depth_format format)
+{
+    if (format == depth_format::d32_sfloat) return d;
+    const double steps = format == depth_format::d24_unorm ? 16777215.0 : 65535.0;
+    const double k = std::floor(std::min(1.0, std::max(0.0, double(d))) * steps + 0.5);
+    return float(k) / float(steps); // k/(2ⁿ − 1) rounded to float: what a conforming GPU returns
 }
 
 struct gbuffer_options {
@@ -96,7 +113,7 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
             const size_t i = size_t(y) * W + x;
             const dvec3 v = org_v + h.t * dir_v; // view-space hit, z = −t
             const vec4 clip = proj * vec4{float(v.x), float(v.y), float(v.z), 1.0f};
-            g.depth[i] = clip.z / clip.w;
+            g.depth[i] = stored_depth(clip.z / clip.w, s.renderer.depth_buffer);
             const dvec3 p = org + h.t * dir;
             g.position[3 * i] = p.x, g.position[3 * i + 1] = p.y, g.position[3 * i + 2] = p.z;
             g.hit[i] = 1;

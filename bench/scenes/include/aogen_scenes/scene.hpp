@@ -2,15 +2,23 @@
 // the renderer has; read from JSON or taken from the built-ins.
 //
 // WHAT
-//   scene                        analytic primitives (planes, boxes, spheres, quads) in world
-//                                space, a camera, the AO radius R and the renderer's inputs.
+//   scene                        analytic primitives (planes, boxes, spheres, quads), triangle
+//                                meshes (mesh.hpp) and point clouds drawn as splats
+//                                (points.hpp) in world space, a camera, the AO radius R and
+//                                the renderer's inputs.
+//   scene::build(tracer)         adds everything to a truth::scene; geometry ids in the order
+//                                planes, boxes, spheres, quads, meshes, point sets. Splats face
+//                                the camera of that moment: build again after moving it.
 //   camera::world_to_view()      look-at from eye/target/up (right-handed, looking down −z).
 //   camera::projection()         aogen::perspective()/orthographic() for the camera's depth
 //                                convention (aogen/math.hpp).
-//   builtin_scene(name)          DESIGN.md's closed-form configurations and a few more;
-//                                builtin_scene_names() lists them.
+//   builtin_scene(name)          DESIGN.md's closed-form configurations and a few more (crease,
+//                                groove, wall, sphere_on_plane, room, stairs, plank), three
+//                                meshes from assimp-testmodels (engine, teapots, terrain) and
+//                                seed 004's point cloud (point_cloud); builtin_scene_names().
 //   read_scene(text, source)     parses the JSON format below; `source` (a file name) starts
-//                                every error message. load_scene(path) reads a file.
+//                                every error message, and relative mesh paths are resolved
+//                                against its directory. load_scene(path) reads a file.
 //
 // JSON FORMAT (every key optional unless marked; unknown keys are errors)
 //   {
@@ -19,8 +27,13 @@
 //       {"type": "plane",  "point": [x,y,z], "normal": [x,y,z], "half_extent": 1e4},
 //       {"type": "box",    "min": [x,y,z], "max": [x,y,z]},       (axis-aligned, min < max)
 //       {"type": "sphere", "centre": [x,y,z], "radius": r},       (r > 0)
-//       {"type": "quad",   "corner": [x,y,z], "e1": [x,y,z], "e2": [x,y,z]}
-//     ],                       ("mesh" is rejected: "meshes: not supported yet")
+//       {"type": "quad",   "corner": [x,y,z], "e1": [x,y,z], "e2": [x,y,z]},
+//       {"type": "mesh",   "file": "model.glb",                   (required; relative to the
+//                          "scale": 1, "rotate_x_degrees": 0,      scene file's directory)
+//                          "translate": [0, 0, 0]},               world = translate + R_x·(scale·v)
+//       {"type": "points", "positions": [[x,y,z], ...],           (required, ≥ 1 point)
+//                          "splat_size": 0.05}                    (side of each splat, > 0)
+//     ],
 //     "camera": {
 //       "projection": "perspective" | "orthographic",            (default perspective)
 //       "tan_half_fov_y": 0.57735,                               (perspective; > 0)
@@ -31,18 +44,27 @@
 //       "eye": [x,y,z], "target": [x,y,z], "up": [x,y,z]
 //     },
 //     "ao_radius": 1.0,                                           (world units, > 0)
-//     "renderer": {"normals": "world" | "view" | "none", "point_cloud": false}
+//     "renderer": {"normals": "world" | "view" | "none", "point_cloud": false,
+//                  "depth_buffer": "d32_sfloat" | "d24_unorm" | "d16_unorm"}  (default d32_sfloat)
 //   }
+//   Meshes are read by load_mesh (mesh.hpp): any format assimp reads, and Terragen .ter.
+//   Points become camera-facing square splats when the scene is built (points.hpp), so they
+//   follow the camera; a point-cloud renderer has no normals ("normals": "none").
 //   Errors name the file and the field, e.g.
 //     scene.json.camera.depth: "reverse" is not a depth convention (valid: standard, reversed, reversed_infinite)
 #pragma once
+
+#include "mesh.hpp"
+#include "points.hpp"
 
 #include <aogen/error.hpp>
 #include <aogen/math.hpp>
 #include <aogen_truth/tracer.hpp>
 #include <generator/json_input.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -50,15 +72,13 @@
 
 namespace aogen::scenes {
 
-using dvec3 = truth::vec3; // world space in double: scenes may sit far from the origin
-
 struct plane { dvec3 point, normal{0, 0, 1}; double half_extent = 1e4; };
-struct box { dvec3 lo, hi; };
 struct sphere { dvec3 centre; double radius = 1; };
 struct quad { dvec3 corner, e1, e2; };
 
 enum class projection_kind { perspective, orthographic };
 enum class normal_space { world, view, none };
+enum class depth_format { d32_sfloat, d24_unorm, d16_unorm }; // the renderer's depth buffer
 
 struct camera {
     projection_kind projection = projection_kind::perspective;
@@ -106,6 +126,7 @@ struct camera {
 struct renderer_inputs {
     normal_space normals = normal_space::world;
     bool point_cloud = false;
+    depth_format depth_buffer = depth_format::d32_sfloat; // the G-buffer's depth is stored as this
 };
 
 struct scene {
@@ -114,19 +135,34 @@ struct scene {
     std::vector<box> boxes;
     std::vector<sphere> spheres;
     std::vector<quad> quads;
+    std::vector<mesh> meshes;       // world space
+    std::vector<points> point_sets; // drawn as splats facing `camera`
     aogen::scenes::camera camera;
     double ao_radius = 1.0;
     renderer_inputs renderer;
 
     // Adds the geometry to a tracer scene (and commits it). Geometry ids follow the order
-    // planes, boxes, spheres, quads.
+    // planes, boxes, spheres, quads, meshes, point sets (one id per mesh and per point set).
     void build(truth::scene& t) const
     {
         for (const plane& p : planes) t.add_plane(p.point, p.normal, p.half_extent);
         for (const box& b : boxes) t.add_box(b.lo, b.hi);
         for (const sphere& s : spheres) t.add_sphere(s.centre, s.radius);
         for (const quad& q : quads) t.add_quad(q.corner, q.e1, q.e2);
+        for (const mesh& m : meshes) t.add_triangles(m.vertices, m.triangles);
+        dvec3 right, up, back;
+        camera.basis(right, up, back);
+        for (const points& p : point_sets) {
+            const mesh splats = splat_mesh(p, right, up);
+            t.add_triangles(splats.vertices, splats.triangles);
+        }
         t.commit();
+    }
+
+    bool has_geometry() const
+    {
+        return !(planes.empty() && boxes.empty() && spheres.empty() && quads.empty() && meshes.empty() &&
+                 point_sets.empty());
     }
 };
 
@@ -135,8 +171,8 @@ struct scene {
 inline void validate(const scene& s, const std::string& where)
 {
     const camera& c = s.camera;
-    if (s.planes.empty() && s.boxes.empty() && s.spheres.empty() && s.quads.empty())
-        fail(where + ": geometry", "is empty", "valid: at least one plane, box, sphere or quad");
+    if (!s.has_geometry())
+        fail(where + ": geometry", "is empty", "valid: at least one plane, box, sphere, quad, mesh or point set");
     require_range(where + ": camera.width", c.width, 1, 16384);
     require_range(where + ": camera.height", c.height, 1, 16384);
     if (c.projection == projection_kind::perspective) {
@@ -164,17 +200,69 @@ inline void validate(const scene& s, const std::string& where)
         if (!(b.lo.x < b.hi.x && b.lo.y < b.hi.y && b.lo.z < b.hi.z))
             fail(where + ": box " + std::to_string(i), "min is not below max on every axis", "valid: min < max componentwise");
     }
+    for (size_t i = 0; i < s.point_sets.size(); ++i) {
+        const points& p = s.point_sets[i];
+        const std::string what = where + ": point set " + std::to_string(i);
+        if (p.positions.empty()) fail(what + " positions", "are empty", "valid: at least one [x, y, z]");
+        if (!(p.splat_size > 0) || !std::isfinite(p.splat_size))
+            fail(what + " splat_size", format_number(p.splat_size) + " is not a positive number", "valid: > 0");
+    }
 }
 
 // --- JSON ---------------------------------------------------------------------------
 
 namespace detail {
 
-inline dvec3 read_vec3(const cli::json_reader& r, const char* key)
+// An [x, y, z] value. json_reader cannot ask whether an array element is an array, so
+// nlohmann's type_error (indexing an object) stands for "not an array".
+inline dvec3 as_vec3(const cli::json_reader& a)
 {
-    const cli::json_reader a = r.array(key);
     if (a.size() != 3) fail(a.path(), "has " + std::to_string(a.size()) + " entries", "valid: [x, y, z]");
-    return {a.at(0).as_number(), a.at(1).as_number(), a.at(2).as_number()};
+    try {
+        return {a.at(0).as_number(), a.at(1).as_number(), a.at(2).as_number()};
+    } catch (const nlohmann::json::type_error&) {
+        fail(a.path(), "is not an array", "valid: [x, y, z]");
+    }
+}
+
+inline dvec3 read_vec3(const cli::json_reader& r, const char* key) { return as_vec3(r.array(key)); }
+
+// A mesh file named in `source` (a scene file): relative paths start at its directory.
+inline std::string resolve_path(const std::string& file, const std::string& source)
+{
+    const std::filesystem::path f(file);
+    return f.is_absolute() ? file : (std::filesystem::path(source).parent_path() / f).string();
+}
+
+// {"type": "mesh", "file", "scale", "rotate_x_degrees", "translate"}: loaded here.
+inline mesh read_mesh(const cli::json_reader& g, const std::string& source)
+{
+    g.only_keys({"type", "file", "scale", "rotate_x_degrees", "translate"});
+    mesh_placement at;
+    if (g.has("scale")) {
+        at.scale = g.number("scale");
+        require_finite_above(g.path() + ".scale", at.scale, 0, 1e30);
+    }
+    if (g.has("rotate_x_degrees")) {
+        at.rotate_x_degrees = g.number("rotate_x_degrees");
+        require_finite_range(g.path() + ".rotate_x_degrees", at.rotate_x_degrees, -360, 360);
+    }
+    if (g.has("translate")) at.translate = read_vec3(g, "translate");
+    return load_mesh(resolve_path(g.string("file"), source), at, g.path() + ".file");
+}
+
+// {"type": "points", "positions": [[x, y, z], ...], "splat_size"}.
+inline points read_points(const cli::json_reader& g)
+{
+    g.only_keys({"type", "positions", "splat_size"});
+    points p;
+    const cli::json_reader positions = g.array("positions");
+    for (size_t i = 0; i < positions.size(); ++i) p.positions.push_back(as_vec3(positions.at(i)));
+    if (g.has("splat_size")) {
+        p.splat_size = g.number("splat_size");
+        require_finite_above(g.path() + ".splat_size", p.splat_size, 0, 1e30);
+    }
+    return p;
 }
 
 template <class E>
@@ -221,9 +309,11 @@ inline scene read_scene(const std::string& text, const std::string& source)
             g.only_keys({"type", "corner", "e1", "e2"});
             s.quads.push_back({detail::read_vec3(g, "corner"), detail::read_vec3(g, "e1"), detail::read_vec3(g, "e2")});
         } else if (type == "mesh") {
-            fail(g.path() + ".type", "\"mesh\": meshes: not supported yet", "valid: plane, box, sphere, quad");
+            s.meshes.push_back(detail::read_mesh(g, source));
+        } else if (type == "points") {
+            s.point_sets.push_back(detail::read_points(g));
         } else {
-            fail(g.path() + ".type", "\"" + type + "\" is not a geometry type", "valid: plane, box, sphere, quad");
+            fail(g.path() + ".type", "\"" + type + "\" is not a geometry type", "valid: plane, box, sphere, quad, mesh, points");
         }
     }
 
@@ -262,12 +352,18 @@ inline scene read_scene(const std::string& text, const std::string& source)
     if (root.has("ao_radius")) s.ao_radius = root.number("ao_radius");
     if (root.has("renderer")) {
         const cli::json_reader r = root.field("renderer");
-        r.only_keys({"normals", "point_cloud"});
+        r.only_keys({"normals", "point_cloud", "depth_buffer"});
         if (r.has("normals"))
             s.renderer.normals = detail::read_enum<normal_space>(
                 r, "normals", {{"world", normal_space::world}, {"view", normal_space::view}, {"none", normal_space::none}},
                 "a normal space");
         if (r.has("point_cloud")) s.renderer.point_cloud = r.boolean("point_cloud");
+        if (r.has("depth_buffer"))
+            s.renderer.depth_buffer = detail::read_enum<depth_format>(r, "depth_buffer",
+                                                                      {{"d32_sfloat", depth_format::d32_sfloat},
+                                                                       {"d24_unorm", depth_format::d24_unorm},
+                                                                       {"d16_unorm", depth_format::d16_unorm}},
+                                                                      "a depth buffer format");
     }
     validate(s, source);
     return s;
@@ -284,11 +380,112 @@ inline scene load_scene(const std::string& path)
 
 // --- built-in scenes ----------------------------------------------------------------
 // World z is up; the floor is z = 0. Default resolution 160×90, 60° vertical field of view.
+// The analytic scenes come first, then the meshes of assimp-testmodels (engine, teapots,
+// terrain: builtin_scene says to install the package when a model is missing), then the
+// point cloud.
 
 inline std::vector<std::string> builtin_scene_names()
 {
-    return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank"};
+    return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank",
+            "engine", "teapots", "terrain", "point_cloud"};
 }
+
+namespace detail {
+
+// Where Debian's assimp-testmodels installs the models.
+inline const std::string testmodels_dir = "/usr/share/assimp/models/";
+
+// A built-in scene's model from assimp-testmodels, placed by `p`, then centred on the z axis
+// with its lowest point at z = 0 (on the floor).
+inline mesh builtin_model(const std::string& scene_name, const std::string& relative_path, const mesh_placement& p)
+{
+    const std::string path = testmodels_dir + relative_path;
+    const std::string subject = "built-in scene " + scene_name;
+    if (!std::ifstream(path))
+        fail(subject, "needs " + path + ", which is missing", "install assimp-testmodels (apt-get install assimp-testmodels)");
+    mesh m = load_mesh(path, p, subject);
+    const box b = bounds(m);
+    translate(m, {-0.5 * (b.lo.x + b.hi.x), -0.5 * (b.lo.y + b.hi.y), -b.lo.z});
+    return m;
+}
+
+// Frames `vertices` (a mesh's, or points) from `azimuth_degrees` around z (0: from −y, 90:
+// from +x) and `elevation_degrees` above the horizon: the nearest distance d at which every
+// vertex projects within ±fill in NDC x and y (per vertex, view offsets (x, y, z) from the
+// target: d ≥ z + |x|/(fill·tan·aspect) and d ≥ z + |y|/(fill·tan)); fill > 1 crops. Three
+// rounds move the target so that the projected extent is centred. Vertices, not the bounding
+// box: a box's corners lie far outside an oblique view of a rounded model. near = d/50;
+// far = d·far_factor, which must reach the farthest visible geometry (a floor seen from 35°
+// elevation: ~7·d at the top of the image).
+inline void frame(camera& c, const std::vector<dvec3>& vertices, double azimuth_degrees, double elevation_degrees, double fill,
+                  double far_factor)
+{
+    const box b = bounds(vertices);
+    const random::cos_sin az = random::cos_sin_turns(azimuth_degrees / 360), el = random::cos_sin_turns(elevation_degrees / 360);
+    const dvec3 back{el.c * az.s, -el.c * az.c, el.s}; // from the target towards the eye
+    c.target = 0.5 * (b.lo + b.hi);
+    c.eye = c.target + back;
+    c.up = {0, 0, 1};
+    dvec3 right, up, b_;
+    c.basis(right, up, b_);
+    const double tx = c.tan_half_fov_y * c.aspect(), ty = c.tan_half_fov_y;
+    double d = 0;
+    for (int round = 0; round < 4; ++round) {
+        d = 0;
+        for (const dvec3& v : vertices) {
+            const dvec3 o = v - c.target;
+            const double z = truth::dot(o, back);
+            d = std::max({d, z + std::abs(truth::dot(o, right)) / (fill * tx), z + std::abs(truth::dot(o, up)) / (fill * ty)});
+        }
+        if (round == 3) break;
+        double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300; // NDC extent at distance d
+        for (const dvec3& v : vertices) {
+            const dvec3 o = v - c.target;
+            const double depth = d - truth::dot(o, back);
+            const double x = truth::dot(o, right) / (depth * tx), y = truth::dot(o, up) / (depth * ty);
+            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+        }
+        c.target = c.target + (0.5 * (lo_x + hi_x) * tx * d) * right + (0.5 * (lo_y + hi_y) * ty * d) * up;
+    }
+    c.eye = c.target + d * back;
+    c.near = float(d / 50), c.far = float(d * far_factor);
+}
+
+// A model scene: the mesh (on a floor plane z = 0 when `floor`), framed from 35° elevation,
+// with ao_radius = radius_fraction × the mesh's bounding-box diagonal.
+inline void set_model(scene& s, mesh m, bool floor, double azimuth_degrees, double fill, double radius_fraction)
+{
+    const box b = bounds(m);
+    const dvec3 diagonal = b.hi - b.lo;
+    if (floor) s.planes = {{{0, 0, 0}, {0, 0, 1}}};
+    frame(s.camera, m.vertices, azimuth_degrees, 35, fill, floor ? 10 : 3);
+    s.meshes = {std::move(m)};
+    s.ao_radius = radius_fraction * std::sqrt(truth::dot(diagonal, diagonal));
+}
+
+// Seed 004's point cloud: a 4 m × 3.5 m floor, a 1 m box and a sphere of radius 0.6 sampled
+// at 400 points/m² (~8 000 points), drawn as 8 cm splats (2 to 4 pixels at 160×90), which
+// cover ~90% of the surfaces (1 − e^(−400·0.08²)) and leave gaps as real point clouds do.
+inline void set_point_cloud(scene& s)
+{
+    constexpr double density = 400;
+    const box b{{-1.2, -0.4, 0}, {-0.2, 0.6, 1}};
+    points p;
+    p.splat_size = 0.08;
+    auto rng = random::seeded(0, points_stream);
+    sample_quad(p, rng, {-2, -1.5, 0}, {4, 0, 0}, {0, 3.5, 0}, density);
+    const auto under_box = [&](dvec3 q) { return q.x > b.lo.x && q.x < b.hi.x && q.y > b.lo.y && q.y < b.hi.y; };
+    p.positions.erase(std::remove_if(p.positions.begin(), p.positions.end(), under_box), p.positions.end());
+    sample_box(p, rng, b, density);
+    sample_sphere(p, rng, {0.9, 0.2, 0.6}, 0.6, density);
+    frame(s.camera, p.positions, 30, 35, 0.95, 10);
+    s.point_sets = {std::move(p)};
+    s.renderer.normals = normal_space::none; // the viewer has depth only
+    s.renderer.point_cloud = true;
+    s.ao_radius = 0.5;
+}
+
+} // namespace detail
 
 inline scene builtin_scene(const std::string& name)
 {
@@ -328,6 +525,16 @@ inline scene builtin_scene(const std::string& name)
         s.planes = {floor};
         s.boxes = {{{-1.5, -0.2, 0.05}, {1.5, 0.2, 0.07}}};
         c.eye = {2.5, -2.5, 1.5}, c.target = {0, 0, 0.05};
+    } else if (name == "engine") { // glTF 2CylinderEngine: y-up millimetres → z-up metres (0.74 m long)
+        detail::set_model(s, detail::builtin_model(name, "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", {0.001, 90, {}}),
+                          true, 30, 0.9, 0.06);
+    } else if (name == "teapots") { // Collada teapots, y-up → z-up (1.3 units across)
+        detail::set_model(s, detail::builtin_model(name, "Collada/teapots.DAE", {1, 90, {}}), true, 30, 0.9, 0.08);
+    } else if (name == "terrain") { // Terragen height field, metres → km (10 km square, 1.4 km relief, z up),
+                                    // seen from −y and cropped (fill 1.3): no floor, sky at the top
+        detail::set_model(s, detail::builtin_model(name, "TER/RealisticTerrain_Large.ter", {0.001, 0, {}}), false, 0, 1.3, 0.06);
+    } else if (name == "point_cloud") {
+        detail::set_point_cloud(s);
     } else {
         std::string valid;
         for (const std::string& n : builtin_scene_names()) valid += (valid.empty() ? "" : ", ") + n;
