@@ -1,61 +1,15 @@
 // The Vulkan harness (aogen/vulkan/*.hpp) on the device it picks (lavapipe here and in CI),
 // with the Khronos validation layer enabled and no message allowed. No test asserts on time.
-#include <aogen/vulkan/chain.hpp>
-#include <aogen/vulkan/device.hpp>
+#include "harness.hpp"
+
 #include <aogen/vulkan/timing.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <memory>
-
-namespace {
 
 using namespace aogen;
-
-// One context for the whole run (lavapipe's start-up is not free); null without a device.
-vulkan::context* shared_context()
-{
-    static std::unique_ptr<vulkan::context> ctx = []() -> std::unique_ptr<vulkan::context> {
-        try {
-            return std::make_unique<vulkan::context>(vulkan::device_options{true, ""});
-        } catch (const std::exception& e) {
-            WARN("no Vulkan device, Vulkan harness tests skipped: " << e.what());
-            return nullptr;
-        }
-    }();
-    return ctx.get();
-}
-
-// A plane facing the camera at view depth 5 over the left 2/3 of the image; the rest is
-// cleared depth (1.0, background). World space = view space.
-vulkan::gbuffer facing_plane(int w, int h, const mat4& proj)
-{
-    vulkan::gbuffer g{w, h, std::vector<float>(static_cast<size_t>(w) * h, 1.0f), std::vector<float>(static_cast<size_t>(w) * h * 4, 0.0f)};
-    const vec4 clip = proj * vec4{0, 0, -5, 1};
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w * 2 / 3; ++x) {
-            g.depth[static_cast<size_t>(y) * w + x] = clip.z / clip.w;
-            g.normals[(static_cast<size_t>(y) * w + x) * 4 + 2] = 1.0f;
-        }
-    return g;
-}
-
-vulkan::chain_settings settings_for(const mat4& proj)
-{
-    vulkan::chain_settings s;
-    s.camera = {mat4{}, proj};
-    return s;
-}
-
-void require_clean(vulkan::context& ctx)
-{
-    const std::vector<std::string> m = ctx.messages();
-    for (const std::string& s : m) UNSCOPED_INFO(s);
-    CHECK(m.empty());
-}
-
-} // namespace
+using namespace aogen_test;
 
 TEST_CASE("vulkan: the context picks a device and enables validation where installed")
 {
@@ -68,40 +22,21 @@ TEST_CASE("vulkan: the context picks a device and enables validation where insta
     CHECK_THROWS_AS(vulkan::context(vulkan::device_options{false, "no such device name"}), aogen::error);
 }
 
-void check_facing_plane(technique t)
+void facing_plane_test(technique t)
 {
     vulkan::context* ctx = shared_context();
     if (!ctx) return;
-    const int W = 64, H = 40;
-    const mat4 proj = perspective(0.9f, float(W) / H, 0.1f, 100.0f);
-    const vulkan::gbuffer g = facing_plane(W, H, proj);
-    {
-        variant v;
-        v.tech = t;
-        v.half_resolution = false;
-        INFO(to_name(v));
-        vulkan::chain c(*ctx, v);
-        const vulkan::chain_result r = c.run(g, settings_for(proj));
-        REQUIRE(r.width == W);
-        REQUIRE(r.height == H);
-        REQUIRE(r.ao.size() == static_cast<size_t>(W) * H);
-        CHECK(r.passes.size() == passes(v).size());
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                const float a = r.ao[static_cast<size_t>(y) * W + x];
-                REQUIRE(std::isfinite(a));
-                if (x < W * 2 / 3) REQUIRE(std::fabs(a - 1.0f) <= 1.0f / 255.0f);
-                else REQUIRE(a == 1.0f);
-            }
-        require_clean(*ctx);
-    }
+    variant v;
+    v.tech = t;
+    v.half_resolution = false;
+    check_facing_plane(*ctx, v);
 }
 
-TEST_CASE("vulkan: ssao, a plane facing the camera is unoccluded, background is exactly 1") { check_facing_plane(technique::ssao); }
+TEST_CASE("vulkan: ssao, a plane facing the camera is unoccluded, background is exactly 1") { facing_plane_test(technique::ssao); }
 
 TEST_CASE("vulkan: gtao, a plane facing the camera is unoccluded, background is exactly 1")
 {
-    check_facing_plane(technique::gtao);
+    facing_plane_test(technique::gtao);
 }
 
 TEST_CASE("vulkan: half resolution of 101x61 is 51x31, every pixel written, finite, in [0, 1]")

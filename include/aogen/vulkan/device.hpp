@@ -2,7 +2,9 @@
 //
 // WHAT
 //   context opens a Vulkan instance without any window or surface, picks one physical
-//   device and creates a logical device with one compute queue:
+//   device and creates a logical device with one queue: of the first queue family with
+//   both graphics and compute where there is one (fragment variants draw), else of the
+//   first family with compute (graphics() says which). The device is:
 //     1. AOGEN_VULKAN_DEVICE (environment) or device_options::name: the first device whose
 //        name contains that substring (case-sensitive); none matching is an aogen::error
 //        that lists the devices present;
@@ -116,6 +118,8 @@ public:
     VkDevice device() const { return device_; }
     VkQueue queue() const { return queue_; }
     uint32_t queue_family() const { return queue_family_; }
+    // Whether the queue also does graphics (needed by fragment variants).
+    bool graphics() const { return graphics_; }
     const std::string& device_name() const { return name_; }
     bool validation_enabled() const { return validation_; }
     // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
@@ -153,14 +157,22 @@ private:
         return VK_FALSE;
     }
 
-    static uint32_t compute_family(VkPhysicalDevice pd)
+    static std::vector<VkQueueFamilyProperties> queue_families(VkPhysicalDevice pd)
     {
         uint32_t n = 0;
         vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
         std::vector<VkQueueFamilyProperties> qf(n);
         vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, qf.data());
-        for (uint32_t i = 0; i < n; ++i)
-            if (qf[i].queueFlags & VK_QUEUE_COMPUTE_BIT) return i;
+        return qf;
+    }
+
+    // The first family with graphics and compute, else the first with compute; UINT32_MAX if none.
+    static uint32_t compute_family(VkPhysicalDevice pd)
+    {
+        const std::vector<VkQueueFamilyProperties> qf = queue_families(pd);
+        for (VkQueueFlags want : {VkQueueFlags(VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT), VkQueueFlags(VK_QUEUE_COMPUTE_BIT)})
+            for (uint32_t i = 0; i < qf.size(); ++i)
+                if ((qf[i].queueFlags & want) == want) return i;
         return UINT32_MAX;
     }
 
@@ -200,11 +212,9 @@ private:
         name_ = props[chosen].deviceName;
         timestamp_period_ = props[chosen].limits.timestampPeriod;
         queue_family_ = compute_family(physical_);
-        uint32_t qn = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qn, nullptr);
-        std::vector<VkQueueFamilyProperties> qf(qn);
-        vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qn, qf.data());
-        timestamp_bits_ = qf[queue_family_].timestampValidBits;
+        const VkQueueFamilyProperties family = queue_families(physical_)[queue_family_];
+        timestamp_bits_ = family.timestampValidBits;
+        graphics_ = (family.queueFlags & VK_QUEUE_GRAPHICS_BIT) != 0;
     }
 
     void create_device()
@@ -249,6 +259,7 @@ private:
     uint32_t queue_family_ = 0;
     std::string name_;
     bool validation_ = false;
+    bool graphics_ = false;
     float timestamp_period_ = 0;
     uint32_t timestamp_bits_ = 0;
     mutable std::mutex mutex_;

@@ -3,9 +3,9 @@
 //     aogen::vulkan::chain c(ctx, v);
 //     std::vector<double> ms = aogen::vulkan::median_pass_ms(c, g, s, 10, 2);  // one per pass
 //
-// Each run is chain::run (timestamp queries around every dispatch); `warmup` runs are
-// discarded first. Empty when the device's queue has no timestamps. aogen::error for K < 1
-// or warmup < 0.
+// Each run is chain::run (timestamp queries around every pass: a dispatch, or a render
+// pass for fragment variants); `warmup` runs are discarded first. Empty when the device's
+// queue has no timestamps. aogen::error for K < 1 or warmup < 0.
 #pragma once
 
 #include "chain.hpp"

@@ -1,0 +1,298 @@
+// aogen/vulkan/passes.hpp — a variant's passes as Vulkan pipelines, compute or fragment.
+//
+// WHAT
+//   pass_pipelines compiles every pass of a variant (codegen::generate → compile::compile
+//   → SPIR-V) into a pipeline, with a descriptor set layout made from the pass's
+//   codegen::resource list, and records a pass into a command buffer:
+//     compute   one compute pipeline per pass; the output is a storage image (GENERAL);
+//               record() dispatches ceil(w / workgroup_x) × ceil(h / workgroup_y) groups.
+//     fragment  one graphics pipeline per pass: the fullscreen-triangle vertex shader
+//               (compiled once: its text is the same in every pass) and the pass's
+//               fragment shader, into one R8_UNORM colour attachment through a render
+//               pass (Vulkan 1.1: no dynamic rendering) that loads and stores it;
+//               record() makes a framebuffer of the output image, sets the viewport and
+//               scissor to the target size and draws 3 vertices without vertex buffers.
+//   output() says how the stage's passes use their output image (usage, layout, access,
+//   pipeline stage) and reader_stage() where the passes sample their inputs, so the
+//   caller's barriers are the same code for both stages.
+//
+// USAGE
+//     aogen::vulkan::pass_pipelines p(ctx, v);            // v.stage compute or fragment
+//     for (size_t i = 0; i < p.size(); ++i) { ... p[i].resources, p[i].set_layout ... }
+//     p.record(scope, cb, i, set, output_image, target_w, target_h);
+//
+// ERRORS
+//   aogen::error: a compile error (naming the shader), a fragment variant on a queue
+//   without graphics, a failing Vulkan call.
+#pragma once
+
+#include "../codegen.hpp"
+#include "../compile.hpp"
+#include "resources.hpp"
+
+#include <string>
+#include <vector>
+
+namespace aogen::vulkan {
+
+// The AO images between passes and at the end: one 8-bit unorm channel.
+inline constexpr VkFormat ao_format = VK_FORMAT_R8_UNORM;
+
+struct pass_pipeline {
+    pass_kind kind = pass_kind::ao;
+    std::vector<codegen::resource> resources; // the compute or fragment shader's, by binding
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+// How a stage's passes write their output image.
+struct output_use {
+    VkImageUsageFlags usage;    // what the image must be created with, besides sampling and transfers
+    VkImageLayout layout;       // the layout while the pass writes it
+    VkAccessFlags access;       // the pass's accesses to it
+    VkPipelineStageFlags stage; // the pipeline stage of those accesses
+};
+
+inline VkDescriptorType descriptor_type(codegen::resource_kind k)
+{
+    switch (k) {
+    case codegen::resource_kind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case codegen::resource_kind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    case codegen::resource_kind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    }
+    throw error("vulkan: unknown resource kind");
+}
+
+class pass_pipelines {
+public:
+    pass_pipelines(context& ctx, const variant& v) : ctx_(ctx), v_(v)
+    {
+        if (fragment() && !ctx.graphics())
+            throw error("vulkan: variant " + to_name(v) + " is a fragment variant, and the queue of " + ctx.device_name() +
+                        " has no graphics (valid: stage compute on this device)");
+        try {
+            build();
+        } catch (...) {
+            destroy();
+            throw;
+        }
+    }
+    ~pass_pipelines() { destroy(); }
+    pass_pipelines(const pass_pipelines&) = delete;
+    pass_pipelines& operator=(const pass_pipelines&) = delete;
+
+    size_t size() const { return passes_.size(); }
+    const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
+    bool fragment() const { return v_.stage == pipeline_stage::fragment; }
+
+    // Where the passes read their inputs (uploads and the previous pass's output).
+    VkPipelineStageFlags reader_stage() const
+    {
+        return fragment() ? VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    }
+
+    output_use output() const
+    {
+        if (fragment())
+            // LOAD_OP_LOAD reads the attachment (the clear value shows wherever no fragment is written).
+            return {VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT};
+        return {VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT};
+    }
+
+    // Records pass `i` with `set` bound, writing `target` (w × h, in output().layout).
+    void record(resource_scope& sc, VkCommandBuffer cb, size_t i, VkDescriptorSet set, const image& target, int w, int h) const
+    {
+        const pass_pipeline& p = passes_[i];
+        const VkPipelineBindPoint point = fragment() ? VK_PIPELINE_BIND_POINT_GRAPHICS : VK_PIPELINE_BIND_POINT_COMPUTE;
+        if (fragment()) begin_render_pass(sc, cb, target, w, h);
+        vkCmdBindPipeline(cb, point, p.pipeline);
+        vkCmdBindDescriptorSets(cb, point, p.layout, 0, 1, &set, 0, nullptr);
+        if (fragment()) {
+            vkCmdDraw(cb, 3, 1, 0, 0); // the fullscreen triangle from gl_VertexIndex
+            vkCmdEndRenderPass(cb);
+        } else {
+            vkCmdDispatch(cb, groups(w, v_.workgroup_x), groups(h, v_.workgroup_y), 1);
+        }
+    }
+
+private:
+    static uint32_t groups(int size, int workgroup) { return static_cast<uint32_t>((size + workgroup - 1) / workgroup); }
+
+    void build()
+    {
+        if (fragment()) make_render_pass();
+        VkShaderModule vertex = VK_NULL_HANDLE;
+        for (const codegen::shader_source& s : codegen::generate(v_)) {
+            if (s.stage == shader_stage::vertex) {
+                if (!vertex) vertex = make_module(s);
+                continue;
+            }
+            passes_.push_back({s.pass, s.resources});
+            pass_pipeline& p = passes_.back();
+            make_layouts(p);
+            if (fragment()) make_graphics(p, vertex, make_module(s));
+            else make_compute(p, make_module(s));
+        }
+    }
+
+    VkShaderModule make_module(const codegen::shader_source& s)
+    {
+        const compile::compiled c = compile::compile(s.glsl, s.stage, s.name, {compile::target::spv});
+        VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        smi.codeSize = c.spirv.size() * 4;
+        smi.pCode = c.spirv.data();
+        VkShaderModule m;
+        check(vkCreateShaderModule(ctx_.device(), &smi, nullptr, &m), "vkCreateShaderModule");
+        modules_.push_back(m);
+        return m;
+    }
+
+    void make_layouts(pass_pipeline& p)
+    {
+        const VkShaderStageFlags visible = fragment() ? VK_SHADER_STAGE_FRAGMENT_BIT : VK_SHADER_STAGE_COMPUTE_BIT;
+        std::vector<VkDescriptorSetLayoutBinding> lb;
+        for (const codegen::resource& r : p.resources) lb.push_back({r.binding, descriptor_type(r.kind), 1, visible, nullptr});
+        VkDescriptorSetLayoutCreateInfo dli{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        dli.bindingCount = static_cast<uint32_t>(lb.size());
+        dli.pBindings = lb.data();
+        check(vkCreateDescriptorSetLayout(ctx_.device(), &dli, nullptr, &p.set_layout), "vkCreateDescriptorSetLayout");
+        VkPipelineLayoutCreateInfo pli{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+        pli.setLayoutCount = 1;
+        pli.pSetLayouts = &p.set_layout;
+        check(vkCreatePipelineLayout(ctx_.device(), &pli, nullptr, &p.layout), "vkCreatePipelineLayout");
+    }
+
+    static VkPipelineShaderStageCreateInfo stage_info(VkShaderStageFlagBits stage, VkShaderModule m)
+    {
+        VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        s.stage = stage;
+        s.module = m;
+        s.pName = "main";
+        return s;
+    }
+
+    void make_compute(pass_pipeline& p, VkShaderModule m)
+    {
+        VkComputePipelineCreateInfo cpi{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+        cpi.stage = stage_info(VK_SHADER_STAGE_COMPUTE_BIT, m);
+        cpi.layout = p.layout;
+        check(vkCreateComputePipelines(ctx_.device(), VK_NULL_HANDLE, 1, &cpi, nullptr, &p.pipeline), "vkCreateComputePipelines");
+    }
+
+    // One colour attachment, loaded (the caller cleared it) and stored, in
+    // COLOR_ATTACHMENT_OPTIMAL before, during and after the pass: the caller's barriers
+    // do every layout transition, as they do for compute.
+    void make_render_pass()
+    {
+        VkAttachmentDescription a{};
+        a.format = ao_format;
+        a.samples = VK_SAMPLE_COUNT_1_BIT;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        a.initialLayout = a.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        const VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        VkSubpassDescription sub{};
+        sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+        sub.colorAttachmentCount = 1;
+        sub.pColorAttachments = &ref;
+        VkRenderPassCreateInfo rpi{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+        rpi.attachmentCount = 1;
+        rpi.pAttachments = &a;
+        rpi.subpassCount = 1;
+        rpi.pSubpasses = &sub;
+        check(vkCreateRenderPass(ctx_.device(), &rpi, nullptr, &render_pass_), "vkCreateRenderPass");
+    }
+
+    // Viewport and scissor are dynamic: the target size is known only when a G-buffer is run.
+    void make_graphics(pass_pipeline& p, VkShaderModule vertex, VkShaderModule fragment_module)
+    {
+        const VkPipelineShaderStageCreateInfo stages[2] = {stage_info(VK_SHADER_STAGE_VERTEX_BIT, vertex),
+                                                           stage_info(VK_SHADER_STAGE_FRAGMENT_BIT, fragment_module)};
+        VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+        VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+        ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+        VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+        vp.viewportCount = vp.scissorCount = 1;
+        VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+        rs.polygonMode = VK_POLYGON_MODE_FILL;
+        rs.cullMode = VK_CULL_MODE_NONE;
+        rs.lineWidth = 1.0f;
+        VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+        ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+        VkPipelineColorBlendAttachmentState att{};
+        att.colorWriteMask = VK_COLOR_COMPONENT_R_BIT; // R8_UNORM has only R
+        VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+        cb.attachmentCount = 1;
+        cb.pAttachments = &att;
+        const VkDynamicState dynamic[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+        VkPipelineDynamicStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+        ds.dynamicStateCount = 2;
+        ds.pDynamicStates = dynamic;
+        VkGraphicsPipelineCreateInfo gpi{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+        gpi.stageCount = 2;
+        gpi.pStages = stages;
+        gpi.pVertexInputState = &vi;
+        gpi.pInputAssemblyState = &ia;
+        gpi.pViewportState = &vp;
+        gpi.pRasterizationState = &rs;
+        gpi.pMultisampleState = &ms;
+        gpi.pColorBlendState = &cb;
+        gpi.pDynamicState = &ds;
+        gpi.layout = p.layout;
+        gpi.renderPass = render_pass_;
+        check(vkCreateGraphicsPipelines(ctx_.device(), VK_NULL_HANDLE, 1, &gpi, nullptr, &p.pipeline), "vkCreateGraphicsPipelines");
+    }
+
+    // A framebuffer of `target` (destroyed with `sc`), the render pass begun on it and the
+    // viewport and scissor set to all of it.
+    void begin_render_pass(resource_scope& sc, VkCommandBuffer cb, const image& target, int w, int h) const
+    {
+        const VkExtent2D size{static_cast<uint32_t>(w), static_cast<uint32_t>(h)};
+        VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fi.renderPass = render_pass_;
+        fi.attachmentCount = 1;
+        fi.pAttachments = &target.view;
+        fi.width = size.width;
+        fi.height = size.height;
+        fi.layers = 1;
+        VkFramebuffer fb;
+        check(vkCreateFramebuffer(ctx_.device(), &fi, nullptr, &fb), "vkCreateFramebuffer");
+        sc.own(fb, vkDestroyFramebuffer);
+        VkRenderPassBeginInfo rbi{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        rbi.renderPass = render_pass_;
+        rbi.framebuffer = fb;
+        rbi.renderArea = {{0, 0}, size};
+        vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
+        const VkViewport viewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f};
+        const VkRect2D scissor{{0, 0}, size};
+        vkCmdSetViewport(cb, 0, 1, &viewport);
+        vkCmdSetScissor(cb, 0, 1, &scissor);
+    }
+
+    void destroy()
+    {
+        VkDevice d = ctx_.device();
+        for (pass_pipeline& p : passes_) {
+            if (p.pipeline) vkDestroyPipeline(d, p.pipeline, nullptr);
+            if (p.layout) vkDestroyPipelineLayout(d, p.layout, nullptr);
+            if (p.set_layout) vkDestroyDescriptorSetLayout(d, p.set_layout, nullptr);
+        }
+        passes_.clear();
+        for (VkShaderModule m : modules_) vkDestroyShaderModule(d, m, nullptr);
+        modules_.clear();
+        if (render_pass_) vkDestroyRenderPass(d, render_pass_, nullptr);
+        render_pass_ = VK_NULL_HANDLE;
+    }
+
+    context& ctx_;
+    variant v_;
+    std::vector<pass_pipeline> passes_;
+    std::vector<VkShaderModule> modules_; // every module, the shared vertex shader once
+    VkRenderPass render_pass_ = VK_NULL_HANDLE;
+};
+
+} // namespace aogen::vulkan

@@ -1,0 +1,145 @@
+// tests/vulkan/harness.hpp — what the Vulkan harness tests share: one validated context,
+// analytic G-buffers and the zero-validation-messages check.
+//
+//     vulkan::context* ctx = shared_context();   // null (tests return) without a device
+//     vulkan::gbuffer g = facing_plane(w, h, proj);
+//     vulkan::gbuffer c = crease(w, h, tan_half_fov_y, proj);   // floor + wall, some background
+//     vulkan::chain_result r = vulkan::chain(*ctx, v).run(g, settings_for(proj));
+//     require_clean(*ctx);                        // no validation message so far
+//     check_facing_plane(*ctx, v);                // AO 1 on the plane, exactly 1 on background
+#pragma once
+
+#include <aogen/vulkan/chain.hpp>
+#include <aogen/vulkan/device.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aogen_test {
+
+using namespace aogen;
+
+// One context for the whole run (lavapipe's start-up is not free); null without a device.
+inline vulkan::context* shared_context()
+{
+    static std::unique_ptr<vulkan::context> ctx = []() -> std::unique_ptr<vulkan::context> {
+        try {
+            return std::make_unique<vulkan::context>(vulkan::device_options{true, ""});
+        } catch (const std::exception& e) {
+            WARN("no Vulkan device, Vulkan harness tests skipped: " << e.what());
+            return nullptr;
+        }
+    }();
+    return ctx.get();
+}
+
+inline size_t pixel(int w, int x, int y) { return static_cast<size_t>(y) * w + x; }
+
+// A G-buffer of w × h cleared to background: standard depth 1, zero normals.
+inline vulkan::gbuffer cleared(int w, int h)
+{
+    return {w, h, std::vector<float>(static_cast<size_t>(w) * h, 1.0f), std::vector<float>(static_cast<size_t>(w) * h * 4, 0.0f)};
+}
+
+// The depth-buffer value of view-space point p: clip z / clip w.
+inline float depth_of(const mat4& proj, vec3 p)
+{
+    const vec4 clip = proj * vec4{p.x, p.y, p.z, 1};
+    return clip.z / clip.w;
+}
+
+inline void set_normal(vulkan::gbuffer& g, size_t i, vec3 n)
+{
+    g.normals[i * 4 + 0] = n.x, g.normals[i * 4 + 1] = n.y, g.normals[i * 4 + 2] = n.z;
+}
+
+// A plane facing the camera at view depth 5 over the left 2/3 of the image; the rest is
+// cleared depth (1.0, background). World space = view space.
+inline vulkan::gbuffer facing_plane(int w, int h, const mat4& proj)
+{
+    vulkan::gbuffer g = cleared(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w * 2 / 3; ++x) {
+            g.depth[pixel(w, x, y)] = depth_of(proj, {0, 0, -5});
+            set_normal(g, pixel(w, x, y), {0, 0, 1});
+        }
+    return g;
+}
+
+// A crease: the floor y = -0.6 meeting the wall z = -3, the wall only for |x| < 1.5, so the
+// image has a concave corner (occluded), open floor and wall (not), and background beside
+// the wall. The camera sits at the origin looking down -z with `tan_half_fov_y`; each
+// pixel centre's ray is intersected analytically. World space = view space.
+inline vulkan::gbuffer crease(int w, int h, float tan_half_fov_y, const mat4& proj)
+{
+    vulkan::gbuffer g = cleared(w, h);
+    const float aspect = float(w) / float(h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            // The view ray through the pixel centre (uv.y = 0 is the top row).
+            const vec3 d{(2.0f * (x + 0.5f) / w - 1.0f) * aspect * tan_half_fov_y, (1.0f - 2.0f * (y + 0.5f) / h) * tan_half_fov_y, -1.0f};
+            float t = 1e30f;
+            vec3 n{};
+            if (d.y < 0.0f) t = -0.6f / d.y, n = {0, 1, 0};                      // floor
+            if (3.0f < t && std::fabs(3.0f * d.x) < 1.5f) t = 3.0f, n = {0, 0, 1}; // wall (d.z = -1)
+            if (t > 100.0f) continue;                                            // past the far plane: background
+            const size_t i = pixel(w, x, y);
+            g.depth[i] = depth_of(proj, {t * d.x, t * d.y, t * d.z});
+            set_normal(g, i, n);
+        }
+    return g;
+}
+
+inline vulkan::chain_settings settings_for(const mat4& proj)
+{
+    vulkan::chain_settings s;
+    s.camera = {mat4{}, proj};
+    return s;
+}
+
+// The full-resolution pixel target pixel (x, y) of `v` reads (common/depth.glsl's ao_full_pixel).
+inline size_t full_pixel_of(const variant& v, int w, int h, int x, int y)
+{
+    const int k = v.half_resolution ? 2 : 1;
+    return pixel(w, std::min(x * k, w - 1), std::min(y * k, h - 1));
+}
+
+inline void require_clean(vulkan::context& ctx)
+{
+    const std::vector<std::string> m = ctx.messages();
+    for (const std::string& s : m) UNSCOPED_INFO(s);
+    CHECK(m.empty());
+}
+
+// Runs `v` on facing_plane(): one result per target pixel, each finite; AO 1 within 1/255
+// where the pixel reads the plane, exactly 1 where it reads background; no validation message.
+inline void check_facing_plane(vulkan::context& ctx, const variant& v)
+{
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.9f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gbuffer g = facing_plane(W, H, proj);
+    INFO(to_name(v));
+    vulkan::chain c(ctx, v);
+    const vulkan::chain_result r = c.run(g, settings_for(proj));
+    const auto [TW, TH] = vulkan::target_size(v, W, H);
+    REQUIRE(r.width == TW);
+    REQUIRE(r.height == TH);
+    REQUIRE(r.ao.size() == static_cast<size_t>(TW) * TH);
+    CHECK(r.passes.size() == passes(v).size());
+    for (int y = 0; y < TH; ++y)
+        for (int x = 0; x < TW; ++x) {
+            INFO("pixel " << x << ", " << y);
+            const float a = r.ao[pixel(TW, x, y)];
+            REQUIRE(std::isfinite(a));
+            if (g.depth[full_pixel_of(v, W, H, x, y)] < 1.0f) REQUIRE(std::fabs(a - 1.0f) <= 1.0f / 255.0f);
+            else REQUIRE(a == 1.0f);
+        }
+    require_clean(ctx);
+}
+
+} // namespace aogen_test
