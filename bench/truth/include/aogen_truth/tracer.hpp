@@ -119,14 +119,36 @@ public:
     }
 
     // A square of side 2·half_extent centred on `point`, perpendicular to `normal`:
-    // "infinite" for points within a few units of the centre (10⁴ by default).
+    // "infinite" for points within a few units of the centre (10⁴ by default). It is made
+    // of nested square rings of half-side 1, 4, 16, … because Embree intersects in float
+    // relative to a triangle's vertices: one pair of 10⁴-sized triangles puts a tilted
+    // plane's surface ~10⁻³ off near its centre, far more than the rays' origin offset,
+    // and every point there would occlude itself. Near the centre the triangles are small.
     void add_plane(vec3 point, vec3 normal, double half_extent = 1e4)
     {
         const vec3 n = normalize(normal);
         const vec3 helper = std::abs(n.x) < 0.9 ? vec3{1, 0, 0} : vec3{0, 1, 0};
         const vec3 t = normalize(cross(helper, n));
         const vec3 b = cross(n, t);
-        add_quad(point - half_extent * t - half_extent * b, (2 * half_extent) * t, (2 * half_extent) * b);
+        std::vector<vec3> v;
+        std::vector<std::array<uint32_t, 3>> triangles;
+        const auto add_square = [&](double s) { // corners counter-clockwise about n
+            for (const auto& c : {std::array<double, 2>{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}) v.push_back(point + (s * c[0]) * t + (s * c[1]) * b);
+        };
+        double s = std::min(1.0, half_extent);
+        add_square(s);
+        triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+        while (s < half_extent) {
+            s = std::min(4 * s, half_extent);
+            const auto inner = uint32_t(v.size() - 4), outer = uint32_t(v.size());
+            add_square(s);
+            for (uint32_t k = 0; k < 4; ++k) {
+                const uint32_t k1 = (k + 1) % 4;
+                triangles.push_back({{inner + k, outer + k, outer + k1}});
+                triangles.push_back({{inner + k, outer + k1, inner + k1}});
+            }
+        }
+        add_triangles(v, triangles);
     }
 
     // An axis-aligned box, 12 triangles.
