@@ -241,6 +241,8 @@ inline report_data run_report(const report_settings& settings)
     if (settings.variants.empty()) aogen::fail("report", "no variants", "valid: at least one variant");
     report_data out;
     out.grid = settings.grid, out.runs = settings.runs, out.warmup = settings.warmup;
+    aogen::vulkan::context ctx(settings.device); // first: a missing device fails before any tracing
+    out.device = ctx.device_name();
 
     std::vector<std::unique_ptr<aogen::truth::scene>> tracers;
     for (size_t i = 0; i < settings.scenes.size(); ++i) {
@@ -254,8 +256,6 @@ inline report_data run_report(const report_settings& settings)
     std::vector<detail::gbuffer_cache> gbuffers;
     for (size_t i = 0; i < out.scenes.size(); ++i) gbuffers.emplace_back(out.scenes[i].scene, *tracers[i]);
 
-    aogen::vulkan::context ctx(settings.device);
-    out.device = ctx.device_name();
     const auto run_variant = [&](const aogen::variant& v, bool mesh_only_scenes) {
         variant_record r;
         r.v = v;
