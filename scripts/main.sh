@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds, and writes the data of the seeds'
-# default configurations (kernels, noise tiles, uniform bytes and declarations per
-# language) into out/seeds (or the directory given as the first argument).
+# The main job: installs what is missing, builds, and makes the error-against-run-time
+# report — every variant of the default matrix on every built-in scene, against
+# ray-traced ground truth, timed on the Vulkan device (lavapipe when there is no GPU) —
+# into out/report/. Arguments go to aogen_report (e.g. --out DIR, --size 640x360,
+# --scenes room,stairs, --device H100); aogen_report --help lists them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh aogen
-build/generator/aogen seeds --out "${1:-out/seeds}"
+scripts/build.sh aogen_report
+build/bench/report/aogen_report "$@"

@@ -84,18 +84,30 @@ int grid_for_rays(int rays)
     aogen::fail("--rays", std::to_string(rays) + " is not a valid ray count", "valid: the square of an even number from 32 to 256: 1024, 1156, ..., 4096, ..., 65536");
 }
 
-// Per scene, the variants Pareto-optimal by calibrated error that ran on it (fastest
+// Per scene, the variants Pareto-optimal on it by time and calibrated error (fastest
 // first, at most 8): reference | variant | |error|.
 std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report::report_data& d, const std::filesystem::path& out)
 {
     std::map<std::string, aogen_report::strip_file> files;
+    const std::vector<size_t> order = aogen_report::detail::by_time(d.variants);
     for (size_t s = 0; s < d.scenes.size(); ++s) {
+        std::vector<double> ms, rmse;
+        for (size_t i : order) {
+            const aogen_report::run_record& r = d.variants[i].runs[s];
+            ms.push_back(r.ran() ? r.ms : std::nan(""));
+            rmse.push_back(r.ran() ? r.calibrated.rmse : std::nan(""));
+        }
+        const std::vector<bool> optimal = aogen_report::pareto_optimal(ms, rmse);
         const aogen_report::scene_record& scene = d.scenes[s];
         aogen_report::strip strip(scene.truth.width, scene.truth.height);
         aogen_report::strip_file file{"strips/" + scene.scene.name + ".png", {}};
-        for (size_t i : aogen_report::detail::by_time(d.variants)) {
-            const aogen_report::variant_record& v = d.variants[i];
-            if (!v.pareto_calibrated || !v.runs[s].ran() || file.variants.size() == 8) continue;
+        std::vector<size_t> rows;
+        for (size_t k = 0; k < order.size(); ++k)
+            if (optimal[k]) rows.push_back(k);
+        std::sort(rows.begin(), rows.end(), [&](size_t a, size_t b) { return ms[a] < ms[b]; });
+        for (size_t k : rows) {
+            if (file.variants.size() == 8) break;
+            const aogen_report::variant_record& v = d.variants[order[k]];
             strip.add_row(scene.truth.ao, v.runs[s].ao, scene.truth.valid);
             file.variants.push_back(v.name);
         }
@@ -106,9 +118,9 @@ std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report:
     return files;
 }
 
-void plot(const std::string& script, const std::filesystem::path& out)
+void plot(const std::string& python, const std::string& script, const std::filesystem::path& out)
 {
-    const std::string command = std::string(AOGEN_REPORT_PYTHON) + " '" + script + "' '" + (out / "results.json").string() + "' '" + (out / "error_vs_time.png").string() + "'";
+    const std::string command = "'" + python + "' '" + script + "' '" + (out / "results.json").string() + "' '" + (out / "error_vs_time.png").string() + "'";
     if (std::system(command.c_str()) != 0)
         aogen::fail("error_vs_time.png", "the plot script failed: " + command, "valid: python3 with matplotlib (python3-matplotlib)");
 }
@@ -118,8 +130,9 @@ void plot(const std::string& script, const std::filesystem::path& out)
 int main(int argc, char** argv)
 {
     CLI::App app{"aogen_report: each AO variant's error against ray-traced ground truth, and its run time"};
-    std::string scenes, variants, size = "320x180", out = "out/report", device, plot_script = AOGEN_REPORT_PLOT_SCRIPT;
-    int rays = 4096, runs = 5, warmup = 1;
+    std::string scenes, variants, size = "320x180", out = "out/report", device;
+    std::string plot_script = AOGEN_REPORT_PLOT_SCRIPT, python = AOGEN_REPORT_PYTHON;
+    int rays = 4096, runs = 7, warmup = 1;
     bool validation = false, no_saving = false;
     app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)");
     app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)");
@@ -130,6 +143,7 @@ int main(int argc, char** argv)
     app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");
     app.add_option("--out", out, "the report folder")->capture_default_str();
     app.add_option("--plot-script", plot_script, "the error-against-time plot script")->capture_default_str();
+    app.add_option("--python", python, "the Python that runs it (with matplotlib)")->capture_default_str();
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
     app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
     try {
@@ -161,7 +175,7 @@ int main(int argc, char** argv)
         aogen::cli::write_file_atomically(folder / "results.json", aogen_report::results_json(d, meta));
         const auto strips = write_strips(d, folder);
         aogen::cli::write_file_atomically(folder / "report.md", aogen_report::report_markdown(d, meta, strips));
-        plot(plot_script, folder);
+        plot(python, plot_script, folder);
         s.progress("wrote " + (folder / "report.md").string());
     } catch (const aogen::error& e) {
         std::cerr << "aogen_report: " << e.what() << "\n";

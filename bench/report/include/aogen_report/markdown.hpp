@@ -32,7 +32,11 @@ inline std::string fixed(double x, int digits)
     return buffer;
 }
 
-inline std::string ratio(double a, double b) { return (std::isfinite(a) && std::isfinite(b) && b > 0) ? fixed(a / b, 2) + "×" : "–"; }
+// How much smaller `a` is than `b`, in percent ("−5 %" when it is larger).
+inline std::string saved(double a, double b)
+{
+    return (std::isfinite(a) && std::isfinite(b) && b > 0) ? fixed(100.0 * (1.0 - a / b), 0) + " %" : "–";
+}
 
 // Variant indices, fastest first (unmeasured last, then by name), so tables are stable.
 inline std::vector<size_t> by_time(const std::vector<variant_record>& v)
@@ -97,8 +101,9 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     for (const scene_record& s : d.scenes) noise = std::max(noise, s.truth.noise_rms);
     md << "\nLargest reference noise: " << fixed(noise, 4) << "; smallest mean calibrated RMSE of any variant: " << fixed(best, 4) << ".\n\n";
 
-    md << "Each scene's strip shows, per row, reference | variant | |variant − reference| (black 0, yellow ≥ " << fixed(heat_full_scale, 2)
-       << "; background in blue-grey), for the variants Pareto-optimal by calibrated error.\n";
+    md << "Each scene's strip shows, per row, reference | variant (default parameters) | |variant − reference| (black 0, yellow ≥ "
+       << fixed(heat_full_scale, 2) << "; background in blue-grey), for the variants Pareto-optimal on that scene by time and "
+          "calibrated error, fastest first.\n";
 
     md << "\n## Per scene\n\n";
     md << "Columns: median ms; default RMSE, MAE, mean signed error (> 0: too light), 99th-percentile |error|; calibrated RMSE "
@@ -127,14 +132,15 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     else {
         md << "On the mesh-only scenes, each SSAO variant as scene selection makes it (the point-cloud fallback left out: the "
               "scenes have no point clouds) beside the same variant with the fallback compiled in. Instructions are the AO shader's "
-              "SPIR-V after spirv-opt; time is the median over the mesh-only scenes.\n\n";
-        md << "| selected | AO instructions (everything on) | ratio | ms (everything on) | ratio | RMSE (everything on) |\n";
-        md << "|---|---:|---:|---:|---:|---:|\n";
+              "SPIR-V after spirv-opt; time is the median over the mesh-only scenes of the whole chain; saved = 1 − selected / "
+              "everything on.\n\n";
+        md << "| selected variant | AO instructions | everything on | saved | ms | everything on | saved | RMSE | everything on |\n";
+        md << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const feature_saving& f : d.savings)
-            md << "| `" << f.selected << "` | " << f.selected_instructions << " (" << f.everything_on_instructions << ") | "
-               << detail::ratio(f.selected_instructions, f.everything_on_instructions) << " | " << fixed(f.selected_ms, 3) << " ("
-               << fixed(f.everything_on_ms, 3) << ") | " << detail::ratio(f.selected_ms, f.everything_on_ms) << " | " << fixed(f.selected_rmse, 4)
-               << " (" << fixed(f.everything_on_rmse, 4) << ") |\n";
+            md << "| `" << f.selected << "` | " << f.selected_instructions << " | " << f.everything_on_instructions << " | "
+               << detail::saved(f.selected_instructions, f.everything_on_instructions) << " | " << fixed(f.selected_ms, 3) << " | "
+               << fixed(f.everything_on_ms, 3) << " | " << detail::saved(f.selected_ms, f.everything_on_ms) << " | " << fixed(f.selected_rmse, 4)
+               << " | " << fixed(f.everything_on_rmse, 4) << " |\n";
         md << "\nLeft out by selection: ";
         for (size_t i = 0; i < d.savings.front().left_out.size(); ++i) md << (i ? "; " : "") << d.savings.front().left_out[i];
         md << ".\n";
