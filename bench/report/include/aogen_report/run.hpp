@@ -241,7 +241,10 @@ inline report_data run_report(const report_settings& settings)
     if (settings.variants.empty()) aogen::fail("report", "no variants", "valid: at least one variant");
     report_data out;
     out.grid = settings.grid, out.runs = settings.runs, out.warmup = settings.warmup;
-    out.device = aogen::vulkan::context(settings.device).device_name(); // first: a missing device fails before any tracing
+    // First: a missing device fails before any tracing.
+    auto ctx = std::make_unique<aogen::vulkan::context>(settings.device);
+    out.device = ctx->device_name();
+    bool graphics_ran = false;
 
     std::vector<std::unique_ptr<aogen::truth::scene>> tracers;
     for (size_t i = 0; i < settings.scenes.size(); ++i) {
@@ -260,10 +263,14 @@ inline report_data run_report(const report_settings& settings)
         r.v = v;
         r.name = aogen::to_name(v);
         detail::count_instructions(r);
-        // A logical device of its own: on lavapipe, compute timestamps taken after a
-        // graphics pipeline has run on the same device come out ~100x too small.
-        aogen::vulkan::context ctx(settings.device);
-        aogen::vulkan::chain c(ctx, v);
+        // A compute variant after a fragment one gets a fresh device: on lavapipe, compute
+        // timestamps taken after a graphics pipeline ran on the same device come out ~100x
+        // too small. (Not one device per variant: NVIDIA's driver refuses new instances
+        // after a few dozen.)
+        const bool fragment = v.stage == aogen::pipeline_stage::fragment;
+        if (graphics_ran && !fragment) ctx.reset(), ctx = std::make_unique<aogen::vulkan::context>(settings.device), graphics_ran = false;
+        graphics_ran = graphics_ran || fragment;
+        aogen::vulkan::chain c(*ctx, v);
         for (size_t s = 0; s < out.scenes.size(); ++s) {
             if (mesh_only_scenes && !out.scenes[s].mesh_only()) {
                 r.runs.push_back({"not a mesh-only scene"});
