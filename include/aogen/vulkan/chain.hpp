@@ -111,13 +111,16 @@ public:
         const std::vector<image> outputs = make_outputs(sc, cb, TW, TH, o.clear);
         const std::vector<VkDescriptorSet> sets = write_sets(sc, s, in, outputs, vec2{float(TW), float(TH)});
 
-        // Pass i writes outputs[i]; pass i + 1 samples it.
+        // Pass i writes outputs[i]; pass i + 1 samples it. Both of a pass's timestamps wait
+        // for everything recorded before them (BOTTOM_OF_PIPE): a TOP_OF_PIPE start may be
+        // written while the uploads or the previous pass still run, and a GPU then charges
+        // that overlap to this pass. So the intervals follow one another and sum to the chain.
         const output_use use = passes_.output();
         for (size_t i = 0; i < passes_.size(); ++i) {
             if (i > 0)
                 barrier(cb, outputs[i - 1], use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT, use.stage,
                         passes_.reader_stage());
-            if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, ts.pool, static_cast<uint32_t>(2 * i));
+            if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, static_cast<uint32_t>(2 * i));
             passes_.record(sc, cb, i, sets[i], outputs[i], TW, TH);
             if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, static_cast<uint32_t>(2 * i + 1));
         }
