@@ -121,6 +121,8 @@ public:
     // Whether the queue also does graphics (needed by fragment variants).
     bool graphics() const { return graphics_; }
     const std::string& device_name() const { return name_; }
+    // A CPU implementation (lavapipe): its timestamps are host time, with quirks of their own.
+    bool cpu() const { return cpu_; }
     bool validation_enabled() const { return validation_; }
     // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
     double timestamp_period_ns() const { return timestamp_bits_ ? timestamp_period_ : 0.0; }
@@ -210,6 +212,7 @@ private:
         if (chosen == usable.size()) chosen = 0;
         physical_ = usable[chosen];
         name_ = props[chosen].deviceName;
+        cpu_ = props[chosen].deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
         timestamp_period_ = props[chosen].limits.timestampPeriod;
         queue_family_ = compute_family(physical_);
         const VkQueueFamilyProperties family = queue_families(physical_)[queue_family_];
@@ -260,6 +263,7 @@ private:
     std::string name_;
     bool validation_ = false;
     bool graphics_ = false;
+    bool cpu_ = false;
     float timestamp_period_ = 0;
     uint32_t timestamp_bits_ = 0;
     mutable std::mutex mutex_;

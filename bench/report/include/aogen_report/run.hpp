@@ -15,8 +15,8 @@
 //        per-scene times; Pareto-optimal variants (pareto.hpp) by time against default
 //        and against calibrated RMSE;
 //     5. the feature saving: for each SSAO variant without the point-cloud fallback, its
-//        twin with the fallback ("everything on") run on the mesh-only scenes — SPIR-V
-//        instructions and time of the scene-selected variant against the twin.
+//        twin with the fallback ("everything on"), run right after it on the mesh-only
+//        scenes — SPIR-V instructions and time of the scene-selected variant against the twin.
 //   Errors depend only on the inputs: the same settings give the same numbers; only the
 //   times vary from run to run.
 //
@@ -41,6 +41,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -215,6 +216,29 @@ inline void mark_pareto(std::vector<variant_record>& variants)
     for (size_t i = 0; i < variants.size(); ++i) variants[i].pareto = p[i], variants[i].pareto_calibrated = pc[i];
 }
 
+// The feature saving of `selected` against `twin`, the same variant with every feature
+// compiled in, over the scenes both ran on; none when they share no scene.
+inline std::optional<feature_saving> compare_twin(const variant_record& selected, const variant_record& twin, const std::vector<scene_record>& scenes)
+{
+    feature_saving f;
+    f.selected = selected.name, f.everything_on = twin.name;
+    f.selected_instructions = selected.ao_instructions, f.everything_on_instructions = twin.ao_instructions;
+    std::vector<double> ms_selected, ms_all;
+    int count = 0;
+    for (size_t s = 0; s < scenes.size(); ++s) {
+        if (!twin.runs[s].ran() || !selected.runs[s].ran()) continue;
+        ms_selected.push_back(selected.runs[s].ms), ms_all.push_back(twin.runs[s].ms);
+        f.selected_rmse += selected.runs[s].plain.rmse, f.everything_on_rmse += twin.runs[s].plain.rmse, ++count;
+    }
+    if (count == 0) return std::nullopt;
+    f.selected_ms = median(ms_selected), f.everything_on_ms = median(ms_all);
+    f.selected_rmse /= count, f.everything_on_rmse /= count;
+    aogen::scene_needs mesh_scene;
+    mesh_scene.normals = selected.v.normals;
+    for (const aogen::left_out_feature& l : aogen::features(selected.v, &mesh_scene).left_out) f.left_out.push_back(l.feature + ": " + l.why);
+    return f;
+}
+
 } // namespace detail
 
 // Scene `s` at the report's resolution, with its G-buffer and reference traced.
@@ -263,12 +287,13 @@ inline report_data run_report(const report_settings& settings)
         r.v = v;
         r.name = aogen::to_name(v);
         detail::count_instructions(r);
-        // A compute variant after a fragment one gets a fresh device: on lavapipe, compute
-        // timestamps taken after a graphics pipeline ran on the same device come out ~100x
-        // too small. (Not one device per variant: NVIDIA's driver refuses new instances
-        // after a few dozen.)
+        // On lavapipe, compute timestamps taken after a graphics pipeline ran on the same
+        // device come out ~100x too small, so a compute variant after a fragment one gets a
+        // fresh device there. Only there: NVIDIA's driver refuses new instances after a few
+        // dozen, and the first variants on a fresh device timed up to 3x fast on an H200.
         const bool fragment = v.stage == aogen::pipeline_stage::fragment;
-        if (graphics_ran && !fragment) ctx.reset(), ctx = std::make_unique<aogen::vulkan::context>(settings.device), graphics_ran = false;
+        if (ctx->cpu() && graphics_ran && !fragment)
+            ctx.reset(), ctx = std::make_unique<aogen::vulkan::context>(settings.device), graphics_ran = false;
         graphics_ran = graphics_ran || fragment;
         aogen::vulkan::chain c(*ctx, v);
         for (size_t s = 0; s < out.scenes.size(); ++s) {
@@ -286,37 +311,16 @@ inline report_data run_report(const report_settings& settings)
         settings.progress("[variant " + std::to_string(i + 1) + "/" + std::to_string(settings.variants.size()) + "] " +
                           aogen::to_name(settings.variants[i]));
         out.variants.push_back(run_variant(settings.variants[i], false));
+        // The twin right after its variant: both timed in the same state of the device.
+        const variant_record& selected = out.variants.back();
+        if (!settings.feature_saving || selected.v.tech != aogen::technique::ssao || selected.v.point_cloud_fallback) continue;
+        aogen::variant all = selected.v;
+        all.point_cloud_fallback = true;
+        settings.progress("[feature saving] " + selected.name + " against " + aogen::to_name(all));
+        const std::optional<feature_saving> f = detail::compare_twin(selected, run_variant(all, true), out.scenes);
+        if (f) out.savings.push_back(*f);
     }
     detail::mark_pareto(out.variants);
-
-    if (settings.feature_saving) {
-        for (const variant_record& selected : out.variants) {
-            if (selected.v.tech != aogen::technique::ssao || selected.v.point_cloud_fallback) continue;
-            aogen::variant all = selected.v;
-            all.point_cloud_fallback = true;
-            settings.progress("[feature saving] " + selected.name + " against " + aogen::to_name(all));
-            const variant_record twin = run_variant(all, true);
-            feature_saving f;
-            f.selected = selected.name, f.everything_on = twin.name;
-            f.selected_instructions = selected.ao_instructions, f.everything_on_instructions = twin.ao_instructions;
-            std::vector<double> ms_selected, ms_all;
-            double rmse_selected = 0, rmse_all = 0;
-            int count = 0;
-            for (size_t s = 0; s < out.scenes.size(); ++s) {
-                if (!twin.runs[s].ran() || !selected.runs[s].ran()) continue;
-                ms_selected.push_back(selected.runs[s].ms), ms_all.push_back(twin.runs[s].ms);
-                rmse_selected += selected.runs[s].plain.rmse, rmse_all += twin.runs[s].plain.rmse, ++count;
-            }
-            if (count == 0) continue;
-            f.selected_ms = detail::median(ms_selected), f.everything_on_ms = detail::median(ms_all);
-            f.selected_rmse = rmse_selected / count, f.everything_on_rmse = rmse_all / count;
-            aogen::scene_needs mesh_scene;
-            mesh_scene.normals = selected.v.normals;
-            for (const aogen::left_out_feature& l : aogen::features(selected.v, &mesh_scene).left_out)
-                f.left_out.push_back(l.feature + ": " + l.why);
-            out.savings.push_back(f);
-        }
-    }
     return out;
 }
 
