@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -84,6 +85,16 @@ int grid_for_rays(int rays)
     aogen::fail("--rays", std::to_string(rays) + " is not a valid ray count", "valid: the square of an even number from 32 to 256: 1024, 1156, ..., 4096, ..., 65536");
 }
 
+// A scene name as a file name: letters, digits, '-' and '_' kept, anything else '_'
+// (scene files may name scenes "box on a floor"; Markdown links break at spaces).
+std::string file_stem(const std::string& name)
+{
+    std::string stem = name;
+    for (char& c : stem)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    return stem;
+}
+
 // Per scene, the variants Pareto-optimal on it by time and calibrated error (fastest
 // first, at most 8): reference | variant | |error|.
 std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report::report_data& d, const std::filesystem::path& out)
@@ -100,7 +111,7 @@ std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report:
         const std::vector<bool> optimal = aogen_report::pareto_optimal(ms, rmse);
         const aogen_report::scene_record& scene = d.scenes[s];
         aogen_report::strip strip(scene.truth.width, scene.truth.height);
-        aogen_report::strip_file file{"strips/" + scene.scene.name + ".png", {}};
+        aogen_report::strip_file file{"strips/" + file_stem(scene.scene.name) + ".png", {}};
         std::vector<size_t> rows;
         for (size_t k = 0; k < order.size(); ++k)
             if (optimal[k]) rows.push_back(k);
