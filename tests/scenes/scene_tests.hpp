@@ -4,6 +4,8 @@
 
 #include <aogen_scenes/gbuffer.hpp>
 
+#include "support.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -45,9 +47,9 @@ inline std::string message_of(const std::string& json, const std::string& source
     return "(no error)";
 }
 
-// The built-in scene `name` into `out`; false, with a warning, when its model file is
-// missing (assimp-testmodels not installed) or aogen::scenes was built without assimp — the
-// only reasons a built-in may be skipped.
+// The built-in scene `name` into `out`; when its model file is missing (assimp-testmodels
+// not installed) or aogen::scenes was built without assimp, a failure, or false with
+// AOGEN_TESTS_OPTIONAL_DEPS=1 (support.hpp).
 inline bool builtin_or_skip(const std::string& name, scene& out)
 {
     try {
@@ -56,18 +58,17 @@ inline bool builtin_or_skip(const std::string& name, scene& out)
     } catch (const aogen::error& e) {
         const std::string m = e.what();
         if (m.find("install assimp-testmodels") == std::string::npos && m.find("built without") == std::string::npos) throw;
-        WARN("skipped: " << m);
-        return false;
+        return aogen_test::skip_missing_dependency(m);
     }
 }
 
-// False, with a warning, when aogen::scenes was built without assimp (no libassimp-dev).
+// Whether aogen::scenes has assimp; without it a failure, or false with
+// AOGEN_TESTS_OPTIONAL_DEPS=1 (support.hpp).
 inline bool have_assimp()
 {
 #ifdef AOGEN_SCENES_ASSIMP
     return true;
 #else
-    WARN("skipped: aogen::scenes was built without assimp");
-    return false;
+    return aogen_test::skip_missing_dependency("aogen::scenes was built without assimp (libassimp-dev)");
 #endif
 }
