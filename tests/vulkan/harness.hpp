@@ -26,9 +26,9 @@ namespace aogen_test {
 
 using namespace aogen;
 
-// One context for the whole run (lavapipe's start-up is not free); null without a device.
-// One validated context for every test; without a device each test fails (or is skipped
-// with AOGEN_TESTS_OPTIONAL_DEPS=1: support.hpp).
+// One validated context for the whole run (lavapipe's start-up is not free). Without a
+// device each test fails, or, with AOGEN_TESTS_OPTIONAL_DEPS=1 (support.hpp), gets null
+// and returns.
 inline vulkan::context* shared_context()
 {
     static std::string failure;
