@@ -15,9 +15,9 @@
 // compute passes write an rgba8 image (ESSL 3.10 has no r8); every other target r8.
 #pragma once
 
-#include "output.hpp"
+#include <aogen_tools/files.hpp>
 #include "struct_json.hpp"
-#include "variant_json.hpp"
+#include <aogen_tools/variant_spec.hpp>
 
 #include <aogen/codegen.hpp>
 #include <aogen/compile.hpp>
@@ -31,6 +31,8 @@
 #include <map>
 
 namespace aogen::cli {
+
+using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
 // The file extension each target's output gets after "<pass>.<stage>.".
 inline const char* target_extension(compile::target t)

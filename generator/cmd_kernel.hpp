@@ -4,13 +4,15 @@
 #pragma once
 
 #include "format.hpp"
-#include "output.hpp"
+#include <aogen_tools/files.hpp>
 
 #include <aogen/kernel.hpp>
 
 #include <CLI/CLI.hpp>
 
 namespace aogen::cli {
+
+using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
 struct kernel_command {
     std::string kind = "crytek";

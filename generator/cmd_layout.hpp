@@ -4,7 +4,7 @@
 //   aogen layout --rules std140 --emit glsl params.json  the GLSL block declaration
 #pragma once
 
-#include "output.hpp"
+#include <aogen_tools/files.hpp>
 #include "struct_json.hpp"
 
 #include <aogen/declare.hpp>
@@ -14,6 +14,8 @@
 #include <optional>
 
 namespace aogen::cli {
+
+using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
 struct layout_command {
     std::string rules;

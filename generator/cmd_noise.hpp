@@ -4,13 +4,15 @@
 #pragma once
 
 #include "format.hpp"
-#include "output.hpp"
+#include <aogen_tools/files.hpp>
 
 #include <aogen/noise.hpp>
 
 #include <CLI/CLI.hpp>
 
 namespace aogen::cli {
+
+using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
 struct noise_command {
     int size = 4;

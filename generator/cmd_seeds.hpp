@@ -14,7 +14,7 @@
 #pragma once
 
 #include "format.hpp"
-#include "output.hpp"
+#include <aogen_tools/files.hpp>
 #include "struct_json.hpp"
 
 #include <aogen/declare.hpp>
@@ -29,6 +29,8 @@
 #include <map>
 
 namespace aogen::cli {
+
+using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
 // The example camera the uniform bytes are packed with: 1920×1080, 60° vertical field
 // of view (tan 30° written out, so no libm call enters the bytes), near 0.1, far 100,

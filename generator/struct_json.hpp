@@ -13,11 +13,13 @@
 // member carrying its own members with offsets relative to that member's start.
 #pragma once
 
-#include "json_input.hpp"
+#include <aogen_tools/json_reader.hpp>
 
 #include <aogen/layout.hpp>
 
 namespace aogen::cli {
+
+using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
 inline layout::struct_desc struct_from_json(const json_reader& in)
 {

@@ -12,8 +12,8 @@
 #include <aogen_report/markdown.hpp>
 
 #include <aogen/matrix.hpp>
-#include <generator/output.hpp>
-#include <generator/variant_json.hpp>
+#include <aogen_tools/files.hpp>
+#include <aogen_tools/variant_spec.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -26,7 +26,7 @@
 
 namespace {
 
-using aogen::cli::json_reader;
+using aogen::tools::json_reader;
 
 std::vector<std::string> comma_list(const std::string& text)
 {
@@ -56,8 +56,8 @@ std::vector<aogen::variant> load_variants(const std::string& list)
 {
     if (list.empty()) return aogen::default_matrix();
     if (ends_with(list, ".json")) {
-        const nlohmann::json doc = json_reader::parse(aogen::cli::read_file(list), list);
-        return aogen::cli::variants_from_json(json_reader(doc, list));
+        const nlohmann::json doc = json_reader::parse(aogen::tools::read_file(list), list);
+        return aogen::tools::variants_from_json(json_reader(doc, list));
     }
     std::vector<aogen::variant> out;
     for (const std::string& name : comma_list(list)) aogen::append_unique(out, aogen::variant_from_name(name));
@@ -123,7 +123,7 @@ std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report:
             file.variants.push_back(v.name);
         }
         if (file.variants.empty()) continue;
-        aogen::cli::write_file_atomically(out / file.path, aogen_report::encode_png(strip.image()));
+        aogen::tools::write_file_atomically(out / file.path, aogen_report::encode_png(strip.image()));
         files[scene.scene.name] = file;
     }
     return files;
@@ -183,9 +183,9 @@ int main(int argc, char** argv)
         for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
         const aogen_report::report_meta meta{command.str()};
         const std::filesystem::path folder(out);
-        aogen::cli::write_file_atomically(folder / "results.json", aogen_report::results_json(d, meta));
+        aogen::tools::write_file_atomically(folder / "results.json", aogen_report::results_json(d, meta));
         const auto strips = write_strips(d, folder);
-        aogen::cli::write_file_atomically(folder / "report.md", aogen_report::report_markdown(d, meta, strips));
+        aogen::tools::write_file_atomically(folder / "report.md", aogen_report::report_markdown(d, meta, strips));
         plot(python, plot_script, folder);
         s.progress("wrote " + (folder / "report.md").string());
     } catch (const aogen::error& e) {

@@ -60,7 +60,7 @@
 #include <aogen/error.hpp>
 #include <aogen/math.hpp>
 #include <aogen_truth/tracer.hpp>
-#include <generator/json_input.hpp>
+#include <aogen_tools/json_reader.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -215,7 +215,7 @@ namespace detail {
 
 // An [x, y, z] value. json_reader cannot ask whether an array element is an array, so
 // nlohmann's type_error (indexing an object) stands for "not an array".
-inline dvec3 as_vec3(const cli::json_reader& a)
+inline dvec3 as_vec3(const tools::json_reader& a)
 {
     if (a.size() != 3) fail(a.path(), "has " + std::to_string(a.size()) + " entries", "valid: [x, y, z]");
     try {
@@ -225,7 +225,7 @@ inline dvec3 as_vec3(const cli::json_reader& a)
     }
 }
 
-inline dvec3 read_vec3(const cli::json_reader& r, const char* key) { return as_vec3(r.array(key)); }
+inline dvec3 read_vec3(const tools::json_reader& r, const char* key) { return as_vec3(r.array(key)); }
 
 // A mesh file named in `source` (a scene file): relative paths start at its directory.
 inline std::string resolve_path(const std::string& file, const std::string& source)
@@ -235,7 +235,7 @@ inline std::string resolve_path(const std::string& file, const std::string& sour
 }
 
 // {"type": "mesh", "file", "scale", "rotate_x_degrees", "translate"}: loaded here.
-inline mesh read_mesh(const cli::json_reader& g, const std::string& source)
+inline mesh read_mesh(const tools::json_reader& g, const std::string& source)
 {
     g.only_keys({"type", "file", "scale", "rotate_x_degrees", "translate"});
     mesh_placement at;
@@ -252,11 +252,11 @@ inline mesh read_mesh(const cli::json_reader& g, const std::string& source)
 }
 
 // {"type": "points", "positions": [[x, y, z], ...], "splat_size"}.
-inline points read_points(const cli::json_reader& g)
+inline points read_points(const tools::json_reader& g)
 {
     g.only_keys({"type", "positions", "splat_size"});
     points p;
-    const cli::json_reader positions = g.array("positions");
+    const tools::json_reader positions = g.array("positions");
     for (size_t i = 0; i < positions.size(); ++i) p.positions.push_back(as_vec3(positions.at(i)));
     if (g.has("splat_size")) {
         p.splat_size = g.number("splat_size");
@@ -266,9 +266,9 @@ inline points read_points(const cli::json_reader& g)
 }
 
 template <class E>
-E read_enum(const cli::json_reader& r, const char* key, std::initializer_list<std::pair<const char*, E>> values, const char* what)
+E read_enum(const tools::json_reader& r, const char* key, std::initializer_list<std::pair<const char*, E>> values, const char* what)
 {
-    const cli::json_reader f = r.field(key);
+    const tools::json_reader f = r.field(key);
     const std::string v = f.as_string();
     std::string valid;
     for (const auto& [name, e] : values) {
@@ -283,15 +283,15 @@ E read_enum(const cli::json_reader& r, const char* key, std::initializer_list<st
 // Parses a scene from JSON text; `source` names it in every message (a file name).
 inline scene read_scene(const std::string& text, const std::string& source)
 {
-    const nlohmann::json doc = cli::json_reader::parse(text, source);
-    const cli::json_reader root(doc, source);
+    const nlohmann::json doc = tools::json_reader::parse(text, source);
+    const tools::json_reader root(doc, source);
     root.only_keys({"name", "geometry", "camera", "ao_radius", "renderer"});
     scene s;
     if (root.has("name")) s.name = root.string("name");
 
-    const cli::json_reader geo = root.array("geometry");
+    const tools::json_reader geo = root.array("geometry");
     for (size_t i = 0; i < geo.size(); ++i) {
-        const cli::json_reader g = geo.at(i);
+        const tools::json_reader g = geo.at(i);
         g.require_object();
         const std::string type = g.string("type");
         if (type == "plane") {
@@ -318,7 +318,7 @@ inline scene read_scene(const std::string& text, const std::string& source)
     }
 
     if (root.has("camera")) {
-        const cli::json_reader c = root.field("camera");
+        const tools::json_reader c = root.field("camera");
         c.only_keys({"projection", "tan_half_fov_y", "left", "right", "bottom", "top", "near", "far", "depth", "width",
                      "height", "eye", "target", "up"});
         camera& cam = s.camera;
@@ -351,7 +351,7 @@ inline scene read_scene(const std::string& text, const std::string& source)
     }
     if (root.has("ao_radius")) s.ao_radius = root.number("ao_radius");
     if (root.has("renderer")) {
-        const cli::json_reader r = root.field("renderer");
+        const tools::json_reader r = root.field("renderer");
         r.only_keys({"normals", "point_cloud", "depth_buffer"});
         if (r.has("normals"))
             s.renderer.normals = detail::read_enum<normal_space>(

@@ -1,8 +1,9 @@
-// generator/json_input.hpp — reading JSON input files with errors that say where.
+// aogen_tools/json_reader.hpp — reading JSON input files with errors that say where.
 //
-// A json_reader is a view of one JSON value plus its path in the file
-// ("params.json: members[2].count"), so every complaint names the file, the field, the
-// value and what would be valid. Unknown keys are errors too: a typo ("cout") should
+// Shared by every tool that reads JSON: the `aogen` command line (struct files, variant
+// specs), the scene files of bench/scenes and the report. A json_reader is a view of one
+// JSON value plus its path in the file ("params.json: members[2].count"), so every
+// complaint names the file, the field, the value and what would be valid. Unknown keys are errors too: a typo ("cout") should
 // not be silently ignored.
 #pragma once
 
@@ -14,7 +15,7 @@
 #include <initializer_list>
 #include <string>
 
-namespace aogen::cli {
+namespace aogen::tools {
 
 class json_reader {
 public:
@@ -124,4 +125,4 @@ private:
     }
 };
 
-} // namespace aogen::cli
+} // namespace aogen::tools

@@ -1,8 +1,9 @@
-// generator/output.hpp — writing files so that a failure never leaves half of one.
+// aogen_tools/files.hpp — reading files, and writing them so that a failure never leaves half of one.
 //
-// Every file the command line writes goes to a temporary name beside its destination
-// and is renamed over it only once complete. Unchanged files are left untouched, so a
-// build that depends on them does not redo work.
+// Shared by the tools that write files: the `aogen` command line (generator/) and the
+// report (bench/report). Every file they write goes to a temporary name beside its
+// destination and is renamed over it only once complete. Unchanged files are left
+// untouched, so a build that depends on them does not redo work.
 #pragma once
 
 #include <aogen/error.hpp>
@@ -15,7 +16,7 @@
 #include <string_view>
 #include <unistd.h>
 
-namespace aogen::cli {
+namespace aogen::tools {
 
 inline bool file_holds(const std::filesystem::path& path, std::string_view bytes)
 {
@@ -69,4 +70,4 @@ inline std::string read_file(const std::string& path)
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-} // namespace aogen::cli
+} // namespace aogen::tools

@@ -1,4 +1,4 @@
-// generator/variant_json.hpp — variant specs and scene files, read from JSON.
+// aogen_tools/variant_spec.hpp — variant specs and scene files, read from JSON.
 //
 // A variant spec (`aogen generate --variants SPEC.json`) names variants and/or
 // matrices whose axes are lists of values:
@@ -17,12 +17,12 @@
 // Every key is optional; unknown keys are errors.
 #pragma once
 
-#include "json_input.hpp"
+#include "json_reader.hpp"
 
 #include <aogen/matrix.hpp>
 #include <aogen/selection.hpp>
 
-namespace aogen::cli {
+namespace aogen::tools {
 
 namespace detail {
 
@@ -120,4 +120,4 @@ inline scene_needs scene_from_json(const json_reader& in)
     return s;
 }
 
-} // namespace aogen::cli
+} // namespace aogen::tools
