@@ -8,15 +8,27 @@
 // rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
 // written is ao_finalize(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
 // formats get (ao, 0, 0, 1).
+//
+// AO_DIAGNOSTICS (codegen::options::diagnostics) adds binding AO_BINDING_RAW, an r32f
+// storage image of the same size that receives ao_pass(pixel) itself, before the guard:
+// a harness counts the NaN, infinities and out-of-range values the pass produced, which
+// the output can never show. The output is the same either way.
 
 layout(local_size_x = AO_WORKGROUP_X, local_size_y = AO_WORKGROUP_Y, local_size_z = 1) in;
 
 layout(set = 0, binding = AO_BINDING_OUTPUT, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;
+#if defined(AO_DIAGNOSTICS)
+layout(set = 0, binding = AO_BINDING_RAW, r32f) uniform writeonly image2D u_raw;
+#endif
 
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(u_output);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
-    imageStore(u_output, pixel, vec4(ao_finalize(ao_pass(pixel)), 0.0, 0.0, 1.0));
+    float ao = ao_pass(pixel);
+#if defined(AO_DIAGNOSTICS)
+    imageStore(u_raw, pixel, vec4(ao));
+#endif
+    imageStore(u_output, pixel, vec4(ao_finalize(ao), 0.0, 0.0, 1.0));
 }

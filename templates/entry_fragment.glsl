@@ -3,10 +3,23 @@
 // common/fullscreen_vertex.glsl (3 vertices, no vertex buffers) and a viewport covering
 // the target. The colour attachment, location 0, is a one-channel target (R8_UNORM);
 // the value written is ao_finalize(ao_pass(pixel)): finite and in [0, 1].
+//
+// AO_DIAGNOSTICS (codegen::options::diagnostics) adds binding AO_BINDING_RAW, an r32f
+// storage image of the target's size that receives ao_pass(pixel) before the guard (as
+// in entry_compute.glsl); storing from a fragment shader needs the device's
+// fragmentStoresAndAtomics.
 
 layout(location = 0) out float o_ao;
+#if defined(AO_DIAGNOSTICS)
+layout(set = 0, binding = AO_BINDING_RAW, r32f) uniform writeonly image2D u_raw;
+#endif
 
 void main()
 {
-    o_ao = ao_finalize(ao_pass(ivec2(gl_FragCoord.xy)));
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float ao = ao_pass(pixel);
+#if defined(AO_DIAGNOSTICS)
+    imageStore(u_raw, pixel, vec4(ao));
+#endif
+    o_ao = ao_finalize(ao);
 }

@@ -38,6 +38,9 @@
 #if defined(AO_STAGE_COMPUTE) && !defined(AO_BINDING_OUTPUT)
 #error aogen: AO_BINDING_OUTPUT is not defined (codegen writes the bindings)
 #endif
+#if defined(AO_DIAGNOSTICS) && !defined(AO_BINDING_RAW)
+#error aogen: AO_DIAGNOSTICS needs AO_BINDING_RAW (codegen writes the bindings)
+#endif
 #if defined(AO_STAGE_COMPUTE) && !defined(AO_OUTPUT_FORMAT)
 #error aogen: AO_OUTPUT_FORMAT is not defined (codegen writes the output image's format)
 #endif

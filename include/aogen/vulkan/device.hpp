@@ -124,6 +124,8 @@ public:
     // A CPU implementation (lavapipe): its timestamps are host time, with quirks of their own.
     bool cpu() const { return cpu_; }
     bool validation_enabled() const { return validation_; }
+    // Whether fragment shaders may write storage images (raw diagnostics of fragment passes).
+    bool fragment_stores() const { return fragment_stores_; }
     // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
     double timestamp_period_ns() const { return timestamp_bits_ ? timestamp_period_ : 0.0; }
     uint32_t timestamp_valid_bits() const { return timestamp_bits_; }
@@ -232,6 +234,9 @@ private:
         VkPhysicalDeviceFeatures want{};
         // r8 / rgba16f / r32f output images are "extended" storage formats.
         want.shaderStorageImageExtendedFormats = have.shaderStorageImageExtendedFormats;
+        // Fragment passes in diagnostic mode store their raw values to a storage image.
+        want.fragmentStoresAndAtomics = have.fragmentStoresAndAtomics;
+        fragment_stores_ = have.fragmentStoresAndAtomics == VK_TRUE;
         VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
         dci.queueCreateInfoCount = 1;
         dci.pQueueCreateInfos = &q;
@@ -264,6 +269,7 @@ private:
     bool validation_ = false;
     bool graphics_ = false;
     bool cpu_ = false;
+    bool fragment_stores_ = false;
     float timestamp_period_ = 0;
     uint32_t timestamp_bits_ = 0;
     mutable std::mutex mutex_;

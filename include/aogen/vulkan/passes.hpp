@@ -1,17 +1,21 @@
-// aogen/vulkan/passes.hpp — a variant's passes as Vulkan pipelines, compute or fragment.
+// aogen/vulkan/passes.hpp — a chain's passes as Vulkan pipelines, compute or fragment.
 //
 // WHAT
-//   pass_pipelines compiles every pass of a variant (codegen::generate → compile::compile
-//   → SPIR-V) into a pipeline, with a descriptor set layout made from the pass's
-//   codegen::resource list, and records a pass into a command buffer:
+//   pass_pipelines compiles every pass of a chain (GLSL → compile::compile → SPIR-V, through
+//   a spirv_cache when one is given) into a pipeline, with a descriptor set layout made from
+//   the pass's codegen::resource list, and records a pass into a command buffer:
 //     compute   one compute pipeline per pass; the output is a storage image (GENERAL);
 //               record() dispatches ceil(w / workgroup_x) × ceil(h / workgroup_y) groups.
 //     fragment  one graphics pipeline per pass: the fullscreen-triangle vertex shader
 //               (compiled once: its text is the same in every pass) and the pass's
 //               fragment shader, into one R8_UNORM colour attachment through a render
 //               pass (Vulkan 1.1: no dynamic rendering) that loads and stores it;
-//               record() makes a framebuffer of the output image, sets the viewport and
-//               scissor to the target size and draws 3 vertices without vertex buffers.
+//               make_framebuffer() makes the framebuffer of an output image once, and
+//               record() sets the viewport and scissor to the target size and draws 3
+//               vertices without vertex buffers.
+//   The passes are a variant's (codegen::generate(v, options): options::diagnostics adds
+//   each pass's raw-value image) or any list of shader sources in codegen's order and with
+//   its resource names — the report's fetch-floor kernels are such a list.
 //   output() says how the stage's passes use their output image (usage, layout, access,
 //   pipeline stage) and reader_stage() where the passes sample their inputs, so the
 //   caller's barriers are the same code for both stages.
@@ -19,16 +23,18 @@
 // USAGE
 //     aogen::vulkan::pass_pipelines p(ctx, v);            // v.stage compute or fragment
 //     for (size_t i = 0; i < p.size(); ++i) { ... p[i].resources, p[i].set_layout ... }
-//     p.record(scope, cb, i, set, output_image, target_w, target_h);
+//     VkFramebuffer fb = p.make_framebuffer(scope, output_image, w, h);   // null for compute
+//     p.record(cb, i, set, fb, target_w, target_h);
 //
 // ERRORS
 //   aogen::error: a compile error (naming the shader), a fragment variant on a queue
-//   without graphics, a failing Vulkan call.
+//   without graphics, raw diagnostics of fragment passes on a device whose fragment
+//   shaders cannot store to images, a failing Vulkan call.
 #pragma once
 
 #include "../codegen.hpp"
-#include "../compile.hpp"
 #include "resources.hpp"
+#include "spirv_cache.hpp"
 
 #include <string>
 #include <vector>
@@ -66,13 +72,24 @@ inline VkDescriptorType descriptor_type(codegen::resource_kind k)
 
 class pass_pipelines {
 public:
-    pass_pipelines(context& ctx, const variant& v) : ctx_(ctx), v_(v)
+    // The passes of variant `v`, generated with `o`.
+    pass_pipelines(context& ctx, const variant& v, const codegen::options& o = {}, spirv_cache* cache = nullptr)
+        : pass_pipelines(ctx, to_name(v), v.stage, v.workgroup_x, v.workgroup_y, codegen::generate(v, o), cache)
+    {
+    }
+
+    // Passes from `sources` (codegen's order: per pass the compute shader, or the vertex
+    // then the fragment shader), all of `stage`; `name` names them in messages.
+    pass_pipelines(context& ctx, std::string name, pipeline_stage stage, int workgroup_x, int workgroup_y,
+                   const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
+        : ctx_(ctx), name_(std::move(name)), stage_(stage), workgroup_x_(workgroup_x), workgroup_y_(workgroup_y)
     {
         if (fragment() && !ctx.graphics())
-            throw error("vulkan: variant " + to_name(v) + " is a fragment variant, and the queue of " + ctx.device_name() +
+            throw error("vulkan: " + name_ + " is a fragment chain, and the queue of " + ctx.device_name() +
                         " has no graphics (valid: stage compute on this device)");
+        spirv_cache own_cache;
         try {
-            build();
+            build(sources, cache ? *cache : own_cache);
         } catch (...) {
             destroy();
             throw;
@@ -84,7 +101,8 @@ public:
 
     size_t size() const { return passes_.size(); }
     const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
-    bool fragment() const { return v_.stage == pipeline_stage::fragment; }
+    bool fragment() const { return stage_ == pipeline_stage::fragment; }
+    const std::string& name() const { return name_; }
 
     // Where the passes read their inputs (uploads and the previous pass's output).
     VkPipelineStageFlags reader_stage() const
@@ -101,48 +119,77 @@ public:
         return {VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT};
     }
 
-    // Records pass `i` with `set` bound, writing `target` (w × h, in output().layout).
-    void record(resource_scope& sc, VkCommandBuffer cb, size_t i, VkDescriptorSet set, const image& target, int w, int h) const
+    // The framebuffer through which a fragment pass writes `target` (w × h), owned by `sc`;
+    // null for compute passes, which write their storage image directly.
+    VkFramebuffer make_framebuffer(resource_scope& sc, const image& target, int w, int h) const
+    {
+        if (!fragment()) return VK_NULL_HANDLE;
+        VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fi.renderPass = render_pass_;
+        fi.attachmentCount = 1;
+        fi.pAttachments = &target.view;
+        fi.width = static_cast<uint32_t>(w);
+        fi.height = static_cast<uint32_t>(h);
+        fi.layers = 1;
+        VkFramebuffer fb;
+        check(vkCreateFramebuffer(ctx_.device(), &fi, nullptr, &fb), "vkCreateFramebuffer");
+        return sc.own(fb, vkDestroyFramebuffer);
+    }
+
+    // Records pass `i` with `set` bound, writing its output (w × h, in output().layout;
+    // `framebuffer` from make_framebuffer for fragment passes).
+    void record(VkCommandBuffer cb, size_t i, VkDescriptorSet set, VkFramebuffer framebuffer, int w, int h) const
     {
         const pass_pipeline& p = passes_[i];
         const VkPipelineBindPoint point = fragment() ? VK_PIPELINE_BIND_POINT_GRAPHICS : VK_PIPELINE_BIND_POINT_COMPUTE;
-        if (fragment()) begin_render_pass(sc, cb, target, w, h);
+        if (fragment()) begin_render_pass(cb, framebuffer, w, h);
         vkCmdBindPipeline(cb, point, p.pipeline);
         vkCmdBindDescriptorSets(cb, point, p.layout, 0, 1, &set, 0, nullptr);
         if (fragment()) {
             vkCmdDraw(cb, 3, 1, 0, 0); // the fullscreen triangle from gl_VertexIndex
             vkCmdEndRenderPass(cb);
         } else {
-            vkCmdDispatch(cb, groups(w, v_.workgroup_x), groups(h, v_.workgroup_y), 1);
+            vkCmdDispatch(cb, groups(w, workgroup_x_), groups(h, workgroup_y_), 1);
         }
     }
 
 private:
     static uint32_t groups(int size, int workgroup) { return static_cast<uint32_t>((size + workgroup - 1) / workgroup); }
 
-    void build()
+    void build(const std::vector<codegen::shader_source>& sources, spirv_cache& cache)
     {
         if (fragment()) make_render_pass();
         VkShaderModule vertex = VK_NULL_HANDLE;
-        for (const codegen::shader_source& s : codegen::generate(v_)) {
+        for (const codegen::shader_source& s : sources) {
             if (s.stage == shader_stage::vertex) {
-                if (!vertex) vertex = make_module(s);
+                if (!vertex) vertex = make_module(cache.get(s));
                 continue;
             }
+            require_storage_in_fragment(s);
             passes_.push_back({s.pass, s.resources});
             pass_pipeline& p = passes_.back();
             make_layouts(p);
-            if (fragment()) make_graphics(p, vertex, make_module(s));
-            else make_compute(p, make_module(s));
+            if (fragment()) make_graphics(p, vertex, make_module(cache.get(s)));
+            else make_compute(p, make_module(cache.get(s)));
         }
     }
 
-    VkShaderModule make_module(const codegen::shader_source& s)
+    // A fragment shader that stores to an image (the raw values of diagnostic mode) needs
+    // the device's fragmentStoresAndAtomics.
+    void require_storage_in_fragment(const codegen::shader_source& s) const
     {
-        const compile::compiled c = compile::compile(s.glsl, s.stage, s.name, {compile::target::spv});
+        if (s.stage != shader_stage::fragment || ctx_.fragment_stores()) return;
+        for (const codegen::resource& r : s.resources)
+            if (r.kind == codegen::resource_kind::storage_image)
+                throw error("vulkan: " + s.name + " stores to image '" + r.name + "' from a fragment shader, which " + ctx_.device_name() +
+                            " does not support (valid: a compute variant, or no raw diagnostics)");
+    }
+
+    VkShaderModule make_module(const std::vector<uint32_t>& spirv)
+    {
         VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        smi.codeSize = c.spirv.size() * 4;
-        smi.pCode = c.spirv.data();
+        smi.codeSize = spirv.size() * 4;
+        smi.pCode = spirv.data();
         VkShaderModule m;
         check(vkCreateShaderModule(ctx_.device(), &smi, nullptr, &m), "vkCreateShaderModule");
         modules_.push_back(m);
@@ -249,22 +296,12 @@ private:
 
     // A framebuffer of `target` (destroyed with `sc`), the render pass begun on it and the
     // viewport and scissor set to all of it.
-    void begin_render_pass(resource_scope& sc, VkCommandBuffer cb, const image& target, int w, int h) const
+    void begin_render_pass(VkCommandBuffer cb, VkFramebuffer framebuffer, int w, int h) const
     {
         const VkExtent2D size{static_cast<uint32_t>(w), static_cast<uint32_t>(h)};
-        VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fi.renderPass = render_pass_;
-        fi.attachmentCount = 1;
-        fi.pAttachments = &target.view;
-        fi.width = size.width;
-        fi.height = size.height;
-        fi.layers = 1;
-        VkFramebuffer fb;
-        check(vkCreateFramebuffer(ctx_.device(), &fi, nullptr, &fb), "vkCreateFramebuffer");
-        sc.own(fb, vkDestroyFramebuffer);
         VkRenderPassBeginInfo rbi{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         rbi.renderPass = render_pass_;
-        rbi.framebuffer = fb;
+        rbi.framebuffer = framebuffer;
         rbi.renderArea = {{0, 0}, size};
         vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
         const VkViewport viewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f};
@@ -289,7 +326,9 @@ private:
     }
 
     context& ctx_;
-    variant v_;
+    std::string name_;
+    pipeline_stage stage_;
+    int workgroup_x_, workgroup_y_;
     std::vector<pass_pipeline> passes_;
     std::vector<VkShaderModule> modules_; // every module, the shared vertex shader once
     VkRenderPass render_pass_ = VK_NULL_HANDLE;

@@ -1,27 +1,33 @@
-// aogen/vulkan/resources.hpp — the buffers, images, samplers and commands of one harness run.
+// aogen/vulkan/resources.hpp — the buffers, images, samplers and commands the harness makes.
 //
 // WHAT
-//   resource_scope owns everything one run creates (command pool, buffers, images, views,
-//   samplers, framebuffers, descriptor pools, ...) and destroys it, in reverse order of
-//   creation, once the queue is idle: a run that throws half-way leaks nothing. On top of
-//   it:
-//     make_buffer     a host-visible, coherent, mapped buffer
-//     make_image      a 2D image with its view; the view's aspect follows the format
-//                     (DEPTH for D32_SFLOAT, COLOR otherwise)
-//     upload          an image filled from host bytes by a buffer → image copy (into the
-//                     depth aspect for a depth format), left in SHADER_READ_ONLY_OPTIMAL
-//     clear           an image filled with one colour (vkCmdClearColorImage)
-//     read_back       a copy of an image into a mapped buffer the host can read
-//     make_sampler    a nearest-filtering sampler (clamped or repeating)
+//   resource_scope owns what it creates (command pools, buffers, images, views, samplers,
+//   framebuffers, descriptor pools, ...) and destroys it, in reverse order of creation,
+//   once the queue is idle: a run that throws half-way leaks nothing. Memory follows a
+//   frame loop's: everything the GPU reads or writes is DEVICE_LOCAL, host-visible memory
+//   is only for staging uploads and for reading results back.
+//     make_image          a 2D device-local image with its view; the view's aspect follows
+//                         the format (DEPTH for D32_SFLOAT, COLOR otherwise)
+//     make_device_buffer  a device-local buffer (storage, or filled by upload_buffer)
+//     make_host_buffer    a host-visible, coherent, mapped buffer: staging and read-back only
+//     upload              an image filled from host bytes through a staging buffer (into
+//                         the depth aspect for a depth format), left in SHADER_READ_ONLY_OPTIMAL
+//     upload_buffer       a device-local buffer filled from host bytes through a staging buffer
+//     clear               an image filled with one colour (vkCmdClearColorImage)
+//     read_back           a copy of an image into a mapped buffer the host can read
+//     make_sampler        a nearest-filtering sampler (clamped or repeating)
 //     begin_commands / submit   one one-time command buffer, submitted and waited for
+//   Staging buffers belong to the scope passed as `staging` (by default the same scope):
+//   a long-lived scope uploads through a short-lived one, freed after the submit, so it
+//   keeps no host copy of what it uploaded.
 //   barrier() is the one image layout transition / memory dependency all of them use.
 //
 // USAGE
-//     aogen::vulkan::resource_scope sc(ctx);
-//     VkCommandBuffer cb = sc.begin_commands();
-//     image depth = sc.upload(cb, w, h, VK_FORMAT_D32_SFLOAT, bytes, size, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+//     aogen::vulkan::resource_scope keep(ctx), staging(ctx);
+//     VkCommandBuffer cb = staging.begin_commands();
+//     image depth = keep.upload(cb, w, h, VK_FORMAT_D32_SFLOAT, bytes, size, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, staging);
 //     ...
-//     sc.submit(cb);                      // waits for the fence
+//     staging.submit(cb);                 // waits for the fence
 //   // ~resource_scope: vkQueueWaitIdle, then every object destroyed
 //
 // ERRORS
@@ -39,7 +45,8 @@ namespace aogen::vulkan {
 
 struct buffer {
     VkBuffer handle = VK_NULL_HANDLE;
-    void* mapped = nullptr;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr; // host buffers only
 };
 
 struct image {
@@ -69,6 +76,19 @@ inline void barrier(VkCommandBuffer cb, const image& img, VkImageLayout from, Vk
     b.image = img.handle;
     b.subresourceRange = {img.aspect, 0, 1, 0, 1};
     vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+// The memory dependency on all of buffer `b` from (src access, src stage) to (dst access, dst stage).
+inline void buffer_barrier(VkCommandBuffer cb, const buffer& b, VkAccessFlags src, VkAccessFlags dst, VkPipelineStageFlags src_stage,
+                           VkPipelineStageFlags dst_stage)
+{
+    VkBufferMemoryBarrier bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    bb.srcAccessMask = src;
+    bb.dstAccessMask = dst;
+    bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    bb.buffer = b.handle;
+    bb.size = VK_WHOLE_SIZE;
+    vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 1, &bb, 0, nullptr);
 }
 
 class resource_scope {
@@ -110,29 +130,41 @@ public:
         return own(m, vkFreeMemory);
     }
 
-    buffer make_buffer(size_t size, VkBufferUsageFlags usage)
+    // A host-visible, coherent buffer, mapped: for staging and read-back, never for what
+    // a shader reads (on a discrete GPU every shader access would cross the bus).
+    buffer make_host_buffer(size_t size, VkBufferUsageFlags usage)
     {
-        VkDevice d = device();
-        buffer r;
-        VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-        bi.size = size;
-        bi.usage = usage;
-        check(vkCreateBuffer(d, &bi, nullptr, &r.handle), "vkCreateBuffer");
-        own(r.handle, vkDestroyBuffer);
-        VkMemoryRequirements mr;
-        vkGetBufferMemoryRequirements(d, r.handle, &mr);
-        VkDeviceMemory m = allocate(mr, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        check(vkBindBufferMemory(d, r.handle, m, 0), "vkBindBufferMemory");
-        check(vkMapMemory(d, m, 0, VK_WHOLE_SIZE, 0, &r.mapped), "vkMapMemory");
+        buffer r = make_buffer(size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+        check(vkMapMemory(device(), r.memory, 0, VK_WHOLE_SIZE, 0, &r.mapped), "vkMapMemory");
         return r;
     }
 
     // A mapped buffer holding a copy of `bytes`.
-    buffer make_buffer(const void* bytes, size_t size, VkBufferUsageFlags usage)
+    buffer make_host_buffer(const void* bytes, size_t size, VkBufferUsageFlags usage)
     {
-        const buffer b = make_buffer(size, usage);
+        const buffer b = make_host_buffer(size, usage);
         std::memcpy(b.mapped, bytes, size);
         return b;
+    }
+
+    // A device-local buffer, not mapped.
+    buffer make_device_buffer(size_t size, VkBufferUsageFlags usage)
+    {
+        return make_buffer(size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    }
+
+    // A device-local buffer holding `bytes`, copied from a staging buffer of `staging`, ready
+    // for shader reads of stages `readers` (as a uniform or storage buffer).
+    buffer upload_buffer(VkCommandBuffer cb, const void* bytes, size_t size, VkBufferUsageFlags usage, VkPipelineStageFlags readers,
+                         resource_scope& staging)
+    {
+        const buffer r = make_device_buffer(size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        const buffer source = staging.make_host_buffer(bytes, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        const VkBufferCopy region{0, 0, size};
+        vkCmdCopyBuffer(cb, source.handle, r.handle, 1, &region);
+        buffer_barrier(cb, r, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_UNIFORM_READ_BIT | VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       readers);
+        return r;
     }
 
     image make_image(int w, int h, VkFormat f, VkImageUsageFlags usage)
@@ -155,7 +187,7 @@ public:
         own(r.handle, vkDestroyImage);
         VkMemoryRequirements mr;
         vkGetImageMemoryRequirements(d, r.handle, &mr);
-        VkDeviceMemory m = allocate(mr, 0);
+        VkDeviceMemory m = allocate(mr, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         check(vkBindImageMemory(d, r.handle, m, 0), "vkBindImageMemory");
         VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         vi.image = r.handle;
@@ -167,16 +199,18 @@ public:
         return r;
     }
 
-    // A sampled image holding `bytes` (tightly packed rows, top row first), in
-    // SHADER_READ_ONLY_OPTIMAL for shaders of `readers` (stage flags).
-    image upload(VkCommandBuffer cb, int w, int h, VkFormat f, const void* bytes, size_t size, VkPipelineStageFlags readers)
+    // A sampled image holding `bytes` (tightly packed rows, top row first), in for shaders of `readers` (stage flags).
+    // SHADER_READ_ONLY_OPTIMAL for shaders of `readers` (stage flags). The staging buffer
+    // belongs to `staging`.
+    image upload(VkCommandBuffer cb, int w, int h, VkFormat f, const void* bytes, size_t size, VkPipelineStageFlags readers,
+                 resource_scope& staging)
     {
         const image r = make_image(w, h, f, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-        const buffer staging = make_buffer(bytes, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        const buffer source = staging.make_host_buffer(bytes, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         barrier(cb, r, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
         const VkBufferImageCopy c = copy_region(r, w, h);
-        vkCmdCopyBufferToImage(cb, staging.handle, r.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &c);
+        vkCmdCopyBufferToImage(cb, source.handle, r.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &c);
         barrier(cb, r, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, readers);
         return r;
@@ -198,16 +232,10 @@ public:
     // TRANSFER_SRC_OPTIMAL) copied into it, made visible to the host.
     buffer read_back(VkCommandBuffer cb, const image& img, int w, int h, size_t texel_bytes)
     {
-        const buffer r = make_buffer(static_cast<size_t>(w) * h * texel_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        const buffer r = make_host_buffer(static_cast<size_t>(w) * h * texel_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         const VkBufferImageCopy c = copy_region(img, w, h);
         vkCmdCopyImageToBuffer(cb, img.handle, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.handle, 1, &c);
-        VkBufferMemoryBarrier hb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
-        hb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        hb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        hb.srcQueueFamilyIndex = hb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        hb.buffer = r.handle;
-        hb.size = VK_WHOLE_SIZE;
-        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &hb, 0, nullptr);
+        buffer_barrier(cb, r, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
         return r;
     }
 
@@ -263,6 +291,22 @@ public:
     }
 
 private:
+    buffer make_buffer(size_t size, VkBufferUsageFlags usage, VkMemoryPropertyFlags properties)
+    {
+        VkDevice d = device();
+        buffer r;
+        VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        bi.size = size;
+        bi.usage = usage;
+        check(vkCreateBuffer(d, &bi, nullptr, &r.handle), "vkCreateBuffer");
+        own(r.handle, vkDestroyBuffer);
+        VkMemoryRequirements mr;
+        vkGetBufferMemoryRequirements(d, r.handle, &mr);
+        r.memory = allocate(mr, properties);
+        check(vkBindBufferMemory(d, r.handle, r.memory, 0), "vkBindBufferMemory");
+        return r;
+    }
+
     static VkExtent3D extent(int w, int h) { return {static_cast<uint32_t>(w), static_cast<uint32_t>(h), 1}; }
 
     static VkBufferImageCopy copy_region(const image& img, int w, int h)

@@ -1,39 +1,226 @@
-// aogen/vulkan/timing.hpp — per-pass GPU times of a chain: the median of K runs after warm-up.
+// aogen/vulkan/timing.hpp — GPU times of bound chains, taken as a frame loop runs them.
 //
-//     aogen::vulkan::chain c(ctx, v);
-//     std::vector<double> ms = aogen::vulkan::median_pass_ms(c, g, s, 10, 2);  // one per pass
+// WHAT
+//   time_chains(ctx, chains, options) times one or more bound chains (bound_chain.hpp):
+//     1. warm-up: the chains are recorded back to back, untimed, and submitted again and
+//        again until options.warmup_ms of wall-clock time of continuous GPU work have
+//        passed, so the GPU leaves its idle clock before anything is timed (an NVIDIA H200
+//        idles at 345 MHz and works at 1980: a chain timed from idle reads several times
+//        slow). Each submission is made longer (up to ~1/4 of the warm-up) until the GPU
+//        spends far more time working than waiting for the next submission.
+//     2. rounds: options.rounds command buffers, each holding options.iterations
+//        iterations of every chain, interleaved — A B C A B C ... — with a timestamp before
+//        the first pass and after every pass of every iteration (bound_chain::record). So
+//        chains that are compared are timed in the same state of the clock, a clock still
+//        ramping favours none of them, and there are no gaps between iterations for it to
+//        drop in.
+//   Per chain: per pass and for the whole chain the median, 10th and 90th percentile
+//   (nearest rank) over all rounds × iterations, each iteration's total, and each round's
+//   median (round_ms: a drift across rounds means the clock was not settled).
+//   Never touches the device's clock or power settings: it only keeps the GPU busy.
+//   Devices whose queue has no timestamps give empty results.
 //
-// Each run is chain::run (timestamp queries around every pass: a dispatch, or a render
-// pass for fragment variants); `warmup` runs are discarded first. Empty when the device's
-// queue has no timestamps. aogen::error for K < 1 or warmup < 0.
+// USAGE
+//     std::unique_ptr<aogen::vulkan::bound_chain> a = chain_a.bind(g, s), b = chain_b.bind(g, s);
+//     aogen::vulkan::timing_options o;                  // 5 rounds × 20 iterations, 200 ms warm-up
+//     aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, {a.get(), b.get()}, o);
+//     t.chains[0].total.median;                         // ms
+//     t.chains[1].passes[0].p90;                        // ms, the AO pass of chain b
+//
+// ERRORS
+//   aogen::error: rounds or iterations outside 1..100000, a negative warm-up, no chains, a
+//   failing Vulkan call.
 #pragma once
 
-#include "chain.hpp"
+#include "bound_chain.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace aogen::vulkan {
 
-inline std::vector<double> median_pass_ms(chain& c, const gbuffer& g, const chain_settings& s, int runs, int warmup = 1)
+struct timing_options {
+    int rounds = 5;          // command buffers of timed iterations
+    int iterations = 20;     // iterations of every chain in each round, interleaved
+    double warmup_ms = 200;  // continuous untimed GPU work first (wall clock)
+};
+
+// A distribution of times, in milliseconds: median, 10th and 90th percentiles.
+struct spread {
+    double median = std::numeric_limits<double>::quiet_NaN();
+    double p10 = std::numeric_limits<double>::quiet_NaN();
+    double p90 = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The nearest-rank percentile q (0..100) of `v` (sorted here); NaN when empty.
+inline double percentile(std::vector<double> v, double q)
 {
-    require_range("vulkan timing runs", runs, 1, 100000);
-    require_range("vulkan timing warmup", warmup, 0, 100000);
-    for (int i = 0; i < warmup; ++i) c.run(g, s);
-    std::vector<std::vector<double>> per_pass;
-    for (int i = 0; i < runs; ++i) {
-        const chain_result r = c.run(g, s);
-        if (r.pass_ms.empty()) return {};
-        per_pass.resize(r.pass_ms.size());
-        for (size_t p = 0; p < r.pass_ms.size(); ++p) per_pass[p].push_back(r.pass_ms[p]);
+    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::sort(v.begin(), v.end());
+    const size_t rank = std::max<size_t>(1, static_cast<size_t>(std::ceil(q / 100.0 * double(v.size()))));
+    return v[std::min(rank, v.size()) - 1];
+}
+
+// The median (the mean of the middle two for an even count), p10 and p90 of `v`.
+inline spread spread_of(std::vector<double> v)
+{
+    spread s;
+    if (v.empty()) return s;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    s.p10 = percentile(v, 10);
+    s.p90 = percentile(v, 90);
+    return s;
+}
+
+struct chain_times {
+    std::vector<spread> passes;    // per pass
+    spread total;                  // the whole chain, per iteration
+    std::vector<double> total_ms;  // every iteration's total, round by round
+    std::vector<double> round_ms;  // each round's median total
+};
+
+struct timing_result {
+    std::vector<chain_times> chains; // in the order given; empty without timestamps
+    double warmup_ms = 0;            // warm-up actually run (wall clock)
+    int warmup_submissions = 0;
+};
+
+namespace detail {
+
+// One primary command buffer of a pool of `sc`, begun (reusable: not one-time).
+inline VkCommandBuffer begin_reusable(context& ctx, resource_scope& sc)
+{
+    VkCommandPoolCreateInfo cpci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cpci.queueFamilyIndex = ctx.queue_family();
+    cpci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    VkCommandPool pool;
+    check(vkCreateCommandPool(ctx.device(), &cpci, nullptr, &pool), "vkCreateCommandPool");
+    sc.own(pool, vkDestroyCommandPool);
+    VkCommandBufferAllocateInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cbi.commandPool = pool;
+    cbi.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cbi.commandBufferCount = 1;
+    VkCommandBuffer cb;
+    check(vkAllocateCommandBuffers(ctx.device(), &cbi, &cb), "vkAllocateCommandBuffers");
+    return cb;
+}
+
+inline void begin(VkCommandBuffer cb)
+{
+    check(vkResetCommandBuffer(cb, 0), "vkResetCommandBuffer");
+    VkCommandBufferBeginInfo bbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bbi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(cb, &bbi), "vkBeginCommandBuffer");
+}
+
+// Ends, submits and waits for `cb` (the fence reset for the next use).
+inline void submit_and_wait(context& ctx, VkCommandBuffer cb, VkFence fence)
+{
+    check(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cb;
+    check(vkQueueSubmit(ctx.queue(), 1, &si, fence), "vkQueueSubmit");
+    check(vkWaitForFences(ctx.device(), 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(vkResetFences(ctx.device(), 1, &fence), "vkResetFences");
+}
+
+inline double elapsed_ms(std::chrono::steady_clock::time_point since)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+// Keeps the GPU busy with `chains` for `ms` of wall-clock time.
+inline void warm_up(context& ctx, const std::vector<const bound_chain*>& chains, double ms, VkCommandBuffer cb, VkFence fence,
+                    timing_result& out)
+{
+    const auto start = std::chrono::steady_clock::now();
+    int repeats = 1; // iterations of every chain per submission
+    while (elapsed_ms(start) < ms) {
+        const auto submitted = std::chrono::steady_clock::now();
+        begin(cb);
+        for (int k = 0; k < repeats; ++k)
+            for (const bound_chain* c : chains) c->record(cb);
+        submit_and_wait(ctx, cb, fence);
+        ++out.warmup_submissions;
+        // Longer submissions until one fills a quarter of the warm-up: the host's turnaround
+        // between them is then a small fraction of the GPU's working time.
+        if (elapsed_ms(submitted) < ms / 4 && repeats < (1 << 16)) repeats *= 2;
     }
-    std::vector<double> out;
-    for (std::vector<double>& t : per_pass) {
-        std::sort(t.begin(), t.end());
-        const size_t n = t.size();
-        out.push_back(n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]));
+    out.warmup_ms = elapsed_ms(start);
+}
+
+} // namespace detail
+
+inline timing_result time_chains(context& ctx, const std::vector<const bound_chain*>& chains, const timing_options& o = {})
+{
+    require_range("vulkan timing rounds", o.rounds, 1, 100000);
+    require_range("vulkan timing iterations", o.iterations, 1, 100000);
+    if (!(o.warmup_ms >= 0)) fail("vulkan timing warmup_ms", format_number(o.warmup_ms) + " is out of range", "valid: >= 0");
+    if (chains.empty()) fail("vulkan timing", "no chains", "valid: at least one bound chain");
+    timing_result out;
+    if (ctx.timestamp_valid_bits() == 0) return out;
+
+    resource_scope sc(ctx);
+    VkCommandBuffer cb = detail::begin_reusable(ctx, sc);
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    check(vkCreateFence(ctx.device(), &fci, nullptr, &fence), "vkCreateFence");
+    sc.own(fence, vkDestroyFence);
+
+    // Query slots of one round: iteration k of chain c starts at first[c] + k * per_iteration.
+    std::vector<uint32_t> first(chains.size());
+    uint32_t per_iteration = 0;
+    for (size_t c = 0; c < chains.size(); ++c) first[c] = per_iteration, per_iteration += chains[c]->queries();
+    const uint32_t queries = per_iteration * static_cast<uint32_t>(o.iterations);
+    VkQueryPoolCreateInfo qpi{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    qpi.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    qpi.queryCount = queries;
+    VkQueryPool pool;
+    check(vkCreateQueryPool(ctx.device(), &qpi, nullptr, &pool), "vkCreateQueryPool");
+    sc.own(pool, vkDestroyQueryPool);
+
+    detail::warm_up(ctx, chains, o.warmup_ms, cb, fence, out);
+
+    std::vector<std::vector<std::vector<double>>> per_pass(chains.size()); // [chain][pass][sample]
+    out.chains.resize(chains.size());
+    for (size_t c = 0; c < chains.size(); ++c) per_pass[c].resize(chains[c]->passes().size());
+    for (int round = 0; round < o.rounds; ++round) {
+        detail::begin(cb);
+        vkCmdResetQueryPool(cb, pool, 0, queries);
+        for (int k = 0; k < o.iterations; ++k)
+            for (size_t c = 0; c < chains.size(); ++c) chains[c]->record(cb, {pool, first[c] + static_cast<uint32_t>(k) * per_iteration});
+        detail::submit_and_wait(ctx, cb, fence);
+        const std::vector<uint64_t> ticks = read_queries(ctx, pool, queries);
+        for (size_t c = 0; c < chains.size(); ++c) {
+            std::vector<double> totals;
+            for (int k = 0; k < o.iterations; ++k) {
+                const std::vector<double> ms = chains[c]->pass_ms(ticks, first[c] + static_cast<size_t>(k) * per_iteration);
+                double total = 0;
+                for (size_t p = 0; p < ms.size(); ++p) per_pass[c][p].push_back(ms[p]), total += ms[p];
+                totals.push_back(total);
+            }
+            out.chains[c].round_ms.push_back(spread_of(totals).median);
+            out.chains[c].total_ms.insert(out.chains[c].total_ms.end(), totals.begin(), totals.end());
+        }
+    }
+    for (size_t c = 0; c < chains.size(); ++c) {
+        for (const std::vector<double>& samples : per_pass[c]) out.chains[c].passes.push_back(spread_of(samples));
+        out.chains[c].total = spread_of(out.chains[c].total_ms);
     }
     return out;
+}
+
+// One chain alone.
+inline chain_times time_chain(context& ctx, const bound_chain& c, const timing_options& o = {})
+{
+    timing_result r = time_chains(ctx, {&c}, o);
+    return r.chains.empty() ? chain_times{} : r.chains.front();
 }
 
 } // namespace aogen::vulkan

@@ -1,0 +1,351 @@
+// aogen/vulkan/bound_chain.hpp — a chain's passes bound once to their inputs, then
+// dispatched as often as wanted.
+//
+// WHAT
+//   bound_chain takes compiled passes (pass_pipelines: a variant's, or the report's
+//   fetch-floor kernels), an uploaded G-buffer (gpu_gbuffer, shared with other chains) and
+//   the chain's own inputs (chain_inputs: uniform bytes per pass, noise tile), and makes,
+//   once, everything a frame loop keeps: device-local uniform buffers and noise image, one
+//   R8_UNORM output image per pass (pass i writes output i, pass i + 1 samples it), the
+//   framebuffers of fragment passes, one descriptor set per pass. Then:
+//     record(cb, timestamps)  records the whole chain into a command buffer, as many times
+//                             as the caller likes (timing.hpp records it hundreds of times
+//                             back to back); with a query pool, one timestamp before the
+//                             first pass and one after each pass;
+//     run_once(clear)         fills every output with `clear`, runs the chain once and reads
+//                             back the last output as floats, with each pass's GPU time —
+//                             and, for passes built with codegen::options::diagnostics, what
+//                             their raw images held (diagnostics.hpp's raw_counts per pass).
+//   Outputs rest in SHADER_READ_ONLY_OPTIMAL between passes and chains: each pass moves its
+//   output to the layout it writes in (GENERAL for compute, COLOR_ATTACHMENT_OPTIMAL for
+//   fragment) and back, so record() can follow itself or any other chain. Every record()
+//   starts with a full execution barrier, so its passes never overlap the work recorded
+//   before it and a pass's time is its own, not shared with its neighbour's.
+//   The AO target size is the caller's (chain.hpp's target_size for a variant).
+//
+// USAGE
+//     aogen::vulkan::pass_pipelines passes(ctx, v);
+//     aogen::vulkan::gpu_gbuffer g(ctx, host_gbuffer);
+//     auto [tw, th] = aogen::vulkan::target_size(v, g.width(), g.height());
+//     aogen::vulkan::bound_chain b(ctx, passes, g, aogen::vulkan::inputs_for(v, settings, tw, th), tw, th);
+//     aogen::vulkan::chain_result r = b.run_once();         // r.ao, r.pass_ms, r.raw
+//     // timing.hpp: time_chains(ctx, {&b, &other}, options)
+//
+// ERRORS
+//   aogen::error: a pass reading normals the G-buffer does not have, uniform bytes for the
+//   wrong number of passes, an unknown resource name, a failing Vulkan call.
+#pragma once
+
+#include "diagnostics.hpp"
+#include "inputs.hpp"
+#include "passes.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aogen::vulkan {
+
+struct chain_result {
+    int width = 0, height = 0;
+    std::vector<float> ao;           // width × height, the last pass's output
+    std::vector<std::string> passes; // "ao", "blur_x", ...
+    std::vector<double> pass_ms;     // GPU time of each pass; empty without timestamps
+    std::vector<raw_counts> raw;     // per pass, for diagnostic passes; empty otherwise
+};
+
+// Where record() writes its timestamps: pool, from query `first` on (queries() of them).
+struct timestamp_slots {
+    VkQueryPool pool = VK_NULL_HANDLE;
+    uint32_t first = 0;
+};
+
+// The results of every query of `pool` [0, count), waited for.
+inline std::vector<uint64_t> read_queries(const context& ctx, VkQueryPool pool, uint32_t count)
+{
+    std::vector<uint64_t> ticks(count);
+    check(vkGetQueryPoolResults(ctx.device(), pool, 0, count, ticks.size() * 8, ticks.data(), 8, VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+          "vkGetQueryPoolResults");
+    return ticks;
+}
+
+class bound_chain {
+public:
+    // `counter` counts the raw images of diagnostic passes (one is made on first use if null).
+    bound_chain(context& ctx, const pass_pipelines& passes, const gpu_gbuffer& g, const chain_inputs& in, int target_width, int target_height,
+                const raw_counter* counter = nullptr)
+        : ctx_(ctx), passes_(passes), scope_(ctx), width_(target_width), height_(target_height), counter_(counter)
+    {
+        if (in.uniforms.size() != passes.size())
+            throw error("vulkan bound chain: uniform bytes for " + std::to_string(in.uniforms.size()) + " passes given to " + passes.name() +
+                        " (valid: one block per pass, " + std::to_string(passes.size()) + ")");
+        for (size_t i = 0; i < passes.size(); ++i)
+            for (const codegen::resource& r : passes[i].resources)
+                if (r.name == "raw") has_raw_ = true;
+        resource_scope staging(ctx);
+        VkCommandBuffer cb = staging.begin_commands();
+        upload_inputs(cb, in, staging);
+        make_outputs(cb);
+        staging.submit(cb);
+        write_sets(g);
+    }
+    bound_chain(const bound_chain&) = delete;
+    bound_chain& operator=(const bound_chain&) = delete;
+
+    const pass_pipelines& passes() const { return passes_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Timestamps one record() writes: one before the first pass, one after each.
+    uint32_t queries() const { return static_cast<uint32_t>(passes_.size() + 1); }
+
+    // Records every pass in order (see the header comment for barriers and layouts).
+    void record(VkCommandBuffer cb, timestamp_slots ts = {}) const
+    {
+        // Nothing recorded before overlaps this chain, and nothing of it overlaps what follows.
+        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 0, nullptr);
+        const output_use use = passes_.output();
+        const VkPipelineStageFlags readers = passes_.reader_stage() | VK_PIPELINE_STAGE_TRANSFER_BIT;
+        // Both timestamps of a pass at BOTTOM_OF_PIPE: written once everything before has
+        // finished, so the intervals follow one another and sum to the chain.
+        if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, ts.first);
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            const image& out = outputs_[i];
+            barrier(cb, out, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.layout, 0, use.access, readers, use.stage);
+            if (has_raw_) raw_barrier(cb, raws_[i]);
+            passes_.record(cb, i, sets_[i], framebuffers_[i], width_, height_);
+            barrier(cb, out, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+                    use.stage, readers);
+            if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, ts.first + static_cast<uint32_t>(i + 1));
+        }
+    }
+
+    // Every output filled with `clear`, the chain run once, the last output read back.
+    chain_result run_once(float clear = 0.0f) const
+    {
+        resource_scope sc(ctx_);
+        VkCommandBuffer cb = sc.begin_commands();
+        for (const image& out : outputs_) clear_output(cb, out, clear, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        const VkQueryPool pool = make_query_pool(sc, cb);
+        record(cb, {pool, 0});
+        const image& last = outputs_.back();
+        barrier(cb, last, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const buffer ao = sc.read_back(cb, last, width_, height_, 1);
+        barrier(cb, last, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
+                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+        const buffer counts = has_raw_ ? count_raw(sc, cb) : buffer{};
+        sc.submit(cb);
+
+        chain_result out;
+        out.width = width_, out.height = height_;
+        out.ao.resize(static_cast<size_t>(width_) * height_);
+        const auto* px = static_cast<const uint8_t*>(ao.mapped);
+        for (size_t i = 0; i < out.ao.size(); ++i) out.ao[i] = px[i] / 255.0f;
+        for (size_t i = 0; i < passes_.size(); ++i) out.passes.push_back(names::name_of(pass_kind_names, passes_[i].kind, "pass"));
+        if (pool) out.pass_ms = pass_ms(read_queries(ctx_, pool, queries()), 0);
+        if (has_raw_)
+            for (size_t i = 0; i < passes_.size(); ++i) out.raw.push_back(raw_counter::decode(static_cast<const uint32_t*>(counts.mapped) + 4 * i));
+        return out;
+    }
+
+    // The GPU time of each pass, in ms, from the ticks record() wrote at `ticks[first...]`.
+    std::vector<double> pass_ms(const std::vector<uint64_t>& ticks, size_t first) const
+    {
+        const uint64_t mask = ctx_.timestamp_valid_bits() >= 64 ? ~0ull : (1ull << ctx_.timestamp_valid_bits()) - 1;
+        std::vector<double> ms;
+        for (size_t i = 0; i < passes_.size(); ++i)
+            ms.push_back(double((ticks[first + i + 1] - ticks[first + i]) & mask) * ctx_.timestamp_period_ns() * 1e-6);
+        return ms;
+    }
+
+private:
+    void upload_inputs(VkCommandBuffer cb, const chain_inputs& in, resource_scope& staging)
+    {
+        const VkPipelineStageFlags readers = passes_.reader_stage();
+        for (const std::vector<uint8_t>& bytes : in.uniforms)
+            uniforms_.push_back({scope_.upload_buffer(cb, bytes.data(), bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, readers, staging), bytes.size()});
+        noise_ = scope_.upload(cb, in.noise_size, in.noise_size, VK_FORMAT_R32G32B32A32_SFLOAT, in.noise.data(), in.noise.size(), readers, staging);
+        clamp_ = scope_.make_sampler(VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE);
+        repeat_ = scope_.make_sampler(VK_SAMPLER_ADDRESS_MODE_REPEAT);
+    }
+
+    // One output per pass, cleared to 0 and left in SHADER_READ_ONLY_OPTIMAL; one raw image
+    // per pass (GENERAL) for diagnostic passes.
+    void make_outputs(VkCommandBuffer cb)
+    {
+        const output_use use = passes_.output();
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            outputs_.push_back(scope_.make_image(width_, height_, ao_format,
+                                                 use.usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT));
+            clear_output(cb, outputs_.back(), 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
+            framebuffers_.push_back(passes_.make_framebuffer(scope_, outputs_.back(), width_, height_));
+            if (!has_raw_) continue;
+            raws_.push_back(scope_.make_image(width_, height_, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT));
+            barrier(cb, raws_.back(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, passes_.reader_stage());
+        }
+    }
+
+    // `img` (in `from`) filled with `value` and left in SHADER_READ_ONLY_OPTIMAL.
+    void clear_output(VkCommandBuffer cb, const image& img, float value, VkImageLayout from) const
+    {
+        barrier(cb, img, from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        VkClearColorValue cc{};
+        cc.float32[0] = cc.float32[1] = cc.float32[2] = cc.float32[3] = value;
+        const VkImageSubresourceRange range{img.aspect, 0, 1, 0, 1};
+        vkCmdClearColorImage(cb, img.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &cc, 1, &range);
+        barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+    }
+
+    // The raw image a pass is about to write: finished with by whatever read or wrote it before.
+    void raw_barrier(VkCommandBuffer cb, const image& raw) const
+    {
+        barrier(cb, raw, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | passes_.reader_stage(), passes_.reader_stage());
+    }
+
+    VkQueryPool make_query_pool(resource_scope& sc, VkCommandBuffer cb) const
+    {
+        if (ctx_.timestamp_valid_bits() == 0) return VK_NULL_HANDLE;
+        VkQueryPoolCreateInfo qpi{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        qpi.queryType = VK_QUERY_TYPE_TIMESTAMP;
+        qpi.queryCount = queries();
+        VkQueryPool pool;
+        check(vkCreateQueryPool(ctx_.device(), &qpi, nullptr, &pool), "vkCreateQueryPool");
+        sc.own(pool, vkDestroyQueryPool);
+        vkCmdResetQueryPool(cb, pool, 0, queries());
+        return pool;
+    }
+
+    // Records the raw-value counts of every pass into a host buffer (after the passes).
+    buffer count_raw(resource_scope& sc, VkCommandBuffer cb) const
+    {
+        if (!counter_) own_counter_ = std::make_unique<raw_counter>(ctx_), counter_ = own_counter_.get();
+        const size_t bytes = raw_counts_bytes * passes_.size();
+        const buffer counts = sc.make_device_buffer(bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        vkCmdFillBuffer(cb, counts.handle, 0, bytes, 0);
+        buffer_barrier(cb, counts, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        VkDescriptorPool pool = make_descriptor_pool(sc, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, uint32_t(passes_.size())},
+                                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, uint32_t(passes_.size())}},
+                                                     uint32_t(passes_.size()));
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            barrier(cb, raws_[i], VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                    passes_.reader_stage(), VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            counter_->record(cb, counter_->make_set(pool, raws_[i], counts, raw_counts_bytes * i), width_, height_);
+        }
+        buffer_barrier(cb, counts, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const buffer host = sc.make_host_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        const VkBufferCopy region{0, 0, bytes};
+        vkCmdCopyBuffer(cb, counts.handle, host.handle, 1, &region);
+        buffer_barrier(cb, host, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+        return host;
+    }
+
+    VkDescriptorPool make_descriptor_pool(resource_scope& sc, const std::vector<VkDescriptorPoolSize>& sizes, uint32_t max_sets) const
+    {
+        VkDescriptorPoolCreateInfo dpi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+        dpi.maxSets = max_sets;
+        dpi.poolSizeCount = static_cast<uint32_t>(sizes.size());
+        dpi.pPoolSizes = sizes.data();
+        VkDescriptorPool pool;
+        check(vkCreateDescriptorPool(ctx_.device(), &dpi, nullptr, &pool), "vkCreateDescriptorPool");
+        return sc.own(pool, vkDestroyDescriptorPool);
+    }
+
+    // The pool for every pass's set: one descriptor per resource, by type.
+    VkDescriptorPool make_pass_pool()
+    {
+        std::vector<VkDescriptorPoolSize> sizes;
+        for (size_t i = 0; i < passes_.size(); ++i)
+            for (const codegen::resource& r : passes_[i].resources) {
+                const VkDescriptorType t = descriptor_type(r.kind);
+                auto it = std::find_if(sizes.begin(), sizes.end(), [t](const VkDescriptorPoolSize& p) { return p.type == t; });
+                if (it == sizes.end()) sizes.push_back({t, 1});
+                else ++it->descriptorCount;
+            }
+        return make_descriptor_pool(scope_, sizes, static_cast<uint32_t>(passes_.size()));
+    }
+
+    // The image (and sampler) a sampled resource of pass `i` reads.
+    VkDescriptorImageInfo sampled(const codegen::resource& r, size_t i, const gpu_gbuffer& g) const
+    {
+        const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        if (r.name == "depth") return {clamp_, g.depth().view, read};
+        if (r.name == "normals") {
+            if (!g.has_normals())
+                throw error("vulkan bound chain: " + passes_.name() + " reads normals, and the G-buffer has none (valid: a G-buffer with "
+                            "width × height × 4 normals, or a reconstructed-normal variant)");
+            return {clamp_, g.normals().view, read};
+        }
+        if (r.name == "noise") return {repeat_, noise_.view, read};
+        if (r.name == "ao_input" && i > 0) return {clamp_, outputs_[i - 1].view, read};
+        throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input)");
+    }
+
+    // A storage image of pass `i`: its output, or its raw values.
+    VkDescriptorImageInfo stored(const codegen::resource& r, size_t i) const
+    {
+        if (r.name == "output") return {VK_NULL_HANDLE, outputs_[i].view, VK_IMAGE_LAYOUT_GENERAL};
+        if (r.name == "raw") return {VK_NULL_HANDLE, raws_[i].view, VK_IMAGE_LAYOUT_GENERAL};
+        throw error("vulkan bound chain: unknown storage image '" + r.name + "' (valid: output, raw)");
+    }
+
+    // One descriptor set per pass, every binding of its resources written.
+    void write_sets(const gpu_gbuffer& g)
+    {
+        VkDevice d = ctx_.device();
+        const VkDescriptorPool pool = make_pass_pool();
+        sets_.resize(passes_.size());
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            const pass_pipeline& p = passes_[i];
+            VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+            dai.descriptorPool = pool;
+            dai.descriptorSetCount = 1;
+            dai.pSetLayouts = &p.set_layout;
+            check(vkAllocateDescriptorSets(d, &dai, &sets_[i]), "vkAllocateDescriptorSets");
+            // Sized up front: the writes point into these vectors.
+            std::vector<VkDescriptorBufferInfo> bufs(p.resources.size());
+            std::vector<VkDescriptorImageInfo> imgs(p.resources.size());
+            std::vector<VkWriteDescriptorSet> writes;
+            for (size_t k = 0; k < p.resources.size(); ++k) {
+                const codegen::resource& r = p.resources[k];
+                VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+                w.dstSet = sets_[i];
+                w.dstBinding = r.binding;
+                w.descriptorCount = 1;
+                w.descriptorType = descriptor_type(r.kind);
+                if (r.kind == codegen::resource_kind::uniform_buffer) {
+                    bufs[k] = {uniforms_[i].first.handle, 0, uniforms_[i].second};
+                    w.pBufferInfo = &bufs[k];
+                } else {
+                    imgs[k] = r.kind == codegen::resource_kind::storage_image ? stored(r, i) : sampled(r, i, g);
+                    w.pImageInfo = &imgs[k];
+                }
+                writes.push_back(w);
+            }
+            vkUpdateDescriptorSets(d, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+        }
+    }
+
+    context& ctx_;
+    const pass_pipelines& passes_;
+    resource_scope scope_;
+    int width_, height_;
+    bool has_raw_ = false;
+    std::vector<std::pair<buffer, size_t>> uniforms_; // per pass: buffer, size
+    image noise_;
+    VkSampler clamp_ = VK_NULL_HANDLE, repeat_ = VK_NULL_HANDLE;
+    std::vector<image> outputs_, raws_;
+    std::vector<VkFramebuffer> framebuffers_;
+    std::vector<VkDescriptorSet> sets_;
+    mutable const raw_counter* counter_;
+    mutable std::unique_ptr<raw_counter> own_counter_; // when no counter was given, made on the first count
+};
+
+} // namespace aogen::vulkan
