@@ -1,0 +1,26 @@
+// floor/gtao.glsl -- the fetch floor of gtao.glsl: per pixel the centre depth, the normal's
+// fetches and the noise rotation, then, for each of AO_GTAO_SLICES slices rotated by the
+// noise, AO_GTAO_STEPS depth fetches on each side along the slice's screen direction at
+// j / STEPS of the radius in pixels -- the positions gtao.glsl reads -- and no horizon,
+// no slice integral.
+
+float ao_pass(ivec2 target_pixel)
+{
+    ivec2 p = ao_full_pixel(target_pixel);
+    float depth = ao_load_depth(p);
+    if (ao_is_background(depth)) return 1.0;
+    float sum = depth + ao_floor_normal_fetches(p);
+    float radius_pixels = ao_floor_radius_pixels(ao_view_z(ao_pixel_uv(p), depth));
+    vec2 rotation = ao_noise_rotation(target_pixel);
+    vec2 centre = vec2(p) + 0.5;
+    for (int s = 0; s < AO_GTAO_SLICES; ++s) {
+        float angle = float(s) * (AO_PI / float(AO_GTAO_SLICES));
+        vec2 base = vec2(cos(angle), sin(angle));
+        vec2 dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
+        for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
+            vec2 offset = dir * (radius_pixels * (float(j) / float(AO_GTAO_STEPS)));
+            sum += ao_floor_depth(ivec2(centre + offset)) + ao_floor_depth(ivec2(centre - offset));
+        }
+    }
+    return fract(sum);
+}

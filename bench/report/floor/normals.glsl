@@ -1,0 +1,39 @@
+// floor/normals.glsl -- the fetch floor's common/normals.glsl: the texel fetches that
+// finding the surface normal costs, without the normal itself.
+
+#if !defined(AO_NORMALS_RECONSTRUCTED)
+layout(set = 0, binding = AO_BINDING_NORMALS) uniform sampler2D u_normals;
+#endif
+
+// The depth at full-resolution pixel q, or 0 off screen (the real passes skip those).
+float ao_floor_depth(ivec2 q)
+{
+    ivec2 size = ao_depth_size();
+    if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) return 0.0;
+    return ao_load_depth(q);
+}
+
+// The sum of what the normal's fetches read at full-resolution pixel p: the G-buffer
+// texel, or the four neighbours' depths common/normals.glsl reconstructs it from.
+float ao_floor_normal_fetches(ivec2 p)
+{
+#if defined(AO_NORMALS_RECONSTRUCTED)
+    return ao_floor_depth(p + ivec2(1, 0)) + ao_floor_depth(p - ivec2(1, 0)) + ao_floor_depth(p + ivec2(0, 1)) +
+           ao_floor_depth(p - ivec2(0, 1));
+#else
+    return texelFetch(u_normals, p, 0).x;
+#endif
+}
+
+// The AO radius in full-resolution pixels at view depth view_z, as gtao.glsl computes it
+// (clip y = proj[1][1] * y / -z), capped at the screen's diagonal.
+float ao_floor_radius_pixels(float view_z)
+{
+    vec2 fsize = vec2(ao_depth_size());
+    float pixels_per_unit = 0.5 * fsize.y * abs(u.proj[1][1]);
+#if !defined(AO_PROJECTION_ORTHOGRAPHIC)
+    pixels_per_unit /= max(-view_z, 1e-30);
+#endif
+    float radius_pixels = min(u.radius * pixels_per_unit, length(fsize));
+    return ao_is_finite(radius_pixels) ? radius_pixels : 0.0;
+}
