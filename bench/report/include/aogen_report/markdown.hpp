@@ -8,9 +8,9 @@
 // to its image strip (relative path) and the variants in its rows.
 #pragma once
 
+#include "number_text.hpp"
 #include "results_json.hpp"
 
-#include <cstdio>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -23,14 +23,6 @@ struct strip_file {
 };
 
 namespace detail {
-
-inline std::string fixed(double x, int digits)
-{
-    if (!std::isfinite(x)) return "–";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
-    return buffer;
-}
 
 // How much smaller `a` is than `b`, in percent ("−5 %" when it is larger).
 inline std::string saved(double a, double b)
