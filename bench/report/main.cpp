@@ -1,11 +1,14 @@
 // aogen_report — how far each AO variant is from the ray-traced truth, and what it costs.
 //
 //     aogen_report [--scenes crease,room,my_scene.json] [--variants spec.json | NAME,NAME]
-//                  [--size 320x180] [--rays 4096] [--runs 5] [--device NAME] [--out out/report]
+//                  [--size 320x180] [--rays 4096] [--rounds 5] [--iterations 4] [--warmup-ms 200]
+//                  [--device NAME] [--out out/report]
 //
 // Writes into --out: report.md (the tables), results.json (every number),
 // error_vs_time.png (bench/report/plot_error_vs_time.py, python3-matplotlib) and
-// strips/<scene>.png (reference | variant | |error| for the Pareto-optimal variants).
+// strips/<scene>.png (reference | variant | |error| for the Pareto-optimal variants, each
+// row labelled). results.json and report.md are written after every scene (marked
+// partial until the last), so an interrupted run keeps what it measured.
 // Progress goes to stderr. A bad argument, scene or variant is one line on stderr and
 // exit status 1 (2 for command-line syntax), before anything is written; every file is
 // written to a temporary name and renamed.
@@ -105,7 +108,7 @@ std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report:
         std::vector<double> ms, rmse;
         for (size_t i : order) {
             const aogen_report::run_record& r = d.variants[i].runs[s];
-            ms.push_back(r.ran() ? r.ms : std::nan(""));
+            ms.push_back(r.ran() ? r.ms.median : std::nan(""));
             rmse.push_back(r.ran() ? r.calibrated.rmse : std::nan(""));
         }
         const std::vector<bool> optimal = aogen_report::pareto_optimal(ms, rmse);
@@ -119,7 +122,9 @@ std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report:
         for (size_t k : rows) {
             if (file.variants.size() == 8) break;
             const aogen_report::variant_record& v = d.variants[order[k]];
-            strip.add_row(scene.truth.ao, v.runs[s].ao, scene.truth.valid);
+            // The label's RMSE is the default-parameter one: what the row's panels show.
+            strip.add_row(scene.truth.ao, v.runs[s].ao.full(scene.truth.width, scene.truth.height), scene.truth.valid,
+                          aogen_report::strip_label(v.name, ms[k], v.runs[s].plain.rmse));
             file.variants.push_back(v.name);
         }
         if (file.variants.empty()) continue;
@@ -143,20 +148,26 @@ int main(int argc, char** argv)
     CLI::App app{"aogen_report: each AO variant's error against ray-traced ground truth, and its run time"};
     std::string scenes, variants, size = "320x180", out = "out/report", device;
     std::string plot_script = AOGEN_REPORT_PLOT_SCRIPT, python = AOGEN_REPORT_PYTHON;
-    int rays = 4096, runs = 7, warmup = 1;
-    bool validation = false, no_saving = false;
+    int rays = 4096;
+    aogen::vulkan::timing_options timing = aogen_report::report_settings{}.timing;
+    bool validation = false, no_saving = false, no_floor = false;
     app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)");
     app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)");
     app.add_option("--size", size, "every scene's resolution, WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--rays", rays, "reference rays per pixel: the square of an even number >= 32")->capture_default_str();
-    app.add_option("--runs", runs, "timed runs per variant and scene (median)")->capture_default_str()->check(CLI::Range(1, 1000));
-    app.add_option("--warmup", warmup, "untimed runs first")->capture_default_str()->check(CLI::Range(0, 1000));
+    app.add_option("--rounds", timing.rounds, "timing rounds per scene: every chain's iterations, interleaved, in one submission")
+        ->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--iterations", timing.iterations, "back-to-back iterations of every chain in each round")
+        ->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--warmup-ms", timing.warmup_ms, "continuous untimed GPU work before each scene's timing, in ms")
+        ->capture_default_str()->check(CLI::Range(0.0, 60000.0));
     app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");
     app.add_option("--out", out, "the report folder")->capture_default_str();
     app.add_option("--plot-script", plot_script, "the error-against-time plot script")->capture_default_str();
     app.add_option("--python", python, "the Python that runs it (with matplotlib)")->capture_default_str();
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
     app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
+    app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch floor");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -168,26 +179,36 @@ int main(int argc, char** argv)
         aogen_report::report_settings s;
         parse_size(size, s.width, s.height);
         s.grid = grid_for_rays(rays);
-        s.runs = runs, s.warmup = warmup;
+        s.timing = timing;
         s.device.name = device, s.device.validation = validation;
         s.feature_saving = !no_saving;
+        s.fetch_floor = !no_floor;
         s.scenes = load_scenes(scenes);
         s.variants = load_variants(variants);
         s.progress = [&](const std::string& line) {
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             std::cerr << "aogen_report " << std::fixed << std::setprecision(1) << t << "s " << line << std::endl;
         };
-        const aogen_report::report_data d = aogen_report::run_report(s);
-
         std::ostringstream command;
         for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
-        const aogen_report::report_meta meta{command.str()};
         const std::filesystem::path folder(out);
+        // After every scene but the last: the tables so far, marked partial.
+        s.scene_done = [&](const aogen_report::report_data& so_far) {
+            if (so_far.scenes.size() == s.scenes.size()) return;
+            const aogen_report::report_meta partial{command.str(), false};
+            aogen::tools::write_file_atomically(folder / "results.json", aogen_report::results_json(so_far, partial));
+            aogen::tools::write_file_atomically(folder / "report.md", aogen_report::report_markdown(so_far, partial, {}));
+            s.progress("wrote the " + std::to_string(so_far.scenes.size()) + " scenes so far to " + (folder / "results.json").string());
+        };
+        const aogen_report::report_data d = aogen_report::run_report(s);
+        const aogen_report::report_meta meta{command.str(), true};
         aogen::tools::write_file_atomically(folder / "results.json", aogen_report::results_json(d, meta));
         const auto strips = write_strips(d, folder);
         aogen::tools::write_file_atomically(folder / "report.md", aogen_report::report_markdown(d, meta, strips));
         plot(python, plot_script, folder);
-        s.progress("wrote " + (folder / "report.md").string());
+        s.progress("wrote " + (folder / "report.md").string() + " (compile " + aogen_report::detail::fixed(d.phases.compile, 1) + " s, trace " +
+                   aogen_report::detail::fixed(d.phases.trace, 1) + " s, score " + aogen_report::detail::fixed(d.phases.score, 1) + " s, time " +
+                   aogen_report::detail::fixed(d.phases.time, 1) + " s; " + std::to_string(d.phases.runs) + " variant × scene runs)");
     } catch (const aogen::error& e) {
         std::cerr << "aogen_report: " << e.what() << "\n";
         return 1;

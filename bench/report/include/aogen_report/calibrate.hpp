@@ -50,24 +50,31 @@ struct calibration_scene {
 };
 
 // Summarises the valid, finite pixels of one scene (AO clamped to [0, 1], as ao^p needs).
+// AO read back from an R8 target holds only the 256 values k/255: those are binned by k
+// directly; any other value goes through a sorted map. Both give the levels in ascending
+// order with the sums taken in pixel order, so the summary is the same either way.
 inline calibration_scene summarise(const std::vector<float>& ao, const std::vector<float>& truth, const std::vector<uint8_t>& valid)
 {
     if (ao.size() != truth.size() || ao.size() != valid.size())
         aogen::fail("calibration", "images of " + std::to_string(ao.size()) + ", " + std::to_string(truth.size()) + " and " +
                                        std::to_string(valid.size()) + " pixels",
                     "valid: AO, truth and mask of the same size");
-    std::map<float, calibration_scene::level> by_value;
+    calibration_scene::level unorm8[256] = {};
+    std::map<float, calibration_scene::level> other;
     for (size_t i = 0; i < ao.size(); ++i) {
         if (!valid[i] || !std::isfinite(ao[i])) continue;
         const float a = std::fmin(std::fmax(ao[i], 0.0f), 1.0f);
-        calibration_scene::level& l = by_value[a];
+        const long k = std::lround(a * 255.0f);
+        calibration_scene::level& l = float(k) / 255.0f == a ? unorm8[k] : other[a];
         l.ao = a;
         l.count += 1;
         l.truth_sum += truth[i];
         l.truth_squares += double(truth[i]) * truth[i];
     }
+    for (int k = 0; k < 256; ++k)
+        if (unorm8[k].count > 0) other.emplace(unorm8[k].ao, unorm8[k]);
     calibration_scene s;
-    for (const auto& entry : by_value) {
+    for (const auto& entry : other) {
         s.levels.push_back(entry.second);
         s.pixels += entry.second.count;
     }

@@ -2,9 +2,11 @@
 //
 //     std::string text = aogen_report::report_markdown(data, meta, strip_files);
 //
-// Sections: how to read it; the variants sorted by time with default and calibrated RMSE
-// and Pareto marks; the scenes with the reference's own noise; per scene, every variant's
-// metrics; the feature saving; what was skipped and why. `strip_files` maps a scene name
+// Sections: how it was measured (device, clocks, timing) and how to read it; the variants
+// sorted by time with their spread, fetch floor and time / floor, default and calibrated
+// RMSE, Pareto marks and raw NaN/Inf and out-of-range counts; the scenes with the
+// reference's own noise and the clocks seen; per scene, every variant's metrics; the
+// feature saving; what was skipped and why. `strip_files` maps a scene name
 // to its image strip (relative path) and the variants in its rows.
 #pragma once
 
@@ -44,6 +46,25 @@ inline std::vector<size_t> by_time(const std::vector<variant_record>& v)
     return order;
 }
 
+// "p10–p90" of a time.
+inline std::string range(double lo, double hi) { return fixed(lo, 3) + "–" + fixed(hi, 3); }
+
+// Raw counts as "NaN/Inf" and "out of [0, 1]" cells; "–" where no diagnostic build ran.
+inline std::string raw_non_finite(const aogen::vulkan::raw_counts& r, bool measured)
+{
+    return measured ? std::to_string(r.nan) + "/" + std::to_string(r.inf) : "–";
+}
+inline std::string raw_range(const aogen::vulkan::raw_counts& r, bool measured)
+{
+    return measured ? std::to_string(r.out_of_range()) : "–";
+}
+
+inline std::string clocks_text(const clock_record& c)
+{
+    if (c.samples == 0) return "not read (no nvidia-smi for this device)";
+    return fixed(c.median, 0) + " MHz median, " + fixed(c.min, 0) + "–" + fixed(c.max, 0) + " over " + std::to_string(c.samples) + " readings";
+}
+
 } // namespace detail
 
 inline std::string report_markdown(const report_data& d, const report_meta& meta, const std::map<std::string, strip_file>& strips)
@@ -52,40 +73,53 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     std::ostringstream md;
     const scene_record& first = d.scenes.front();
     md << "# aogen report: AO error against run time\n\n";
-    md << "- Device: **" << d.device << "**\n";
-    md << "- " << d.scenes.size() << " scenes at " << first.scene.camera.width << "×" << first.scene.camera.height << ", " << d.variants.size()
+    if (!meta.complete) md << "**Partial report**: written after scene " << d.scenes.size() << "; the run goes on (or was interrupted).\n\n";
+    md << "- Device: **" << d.device << "**";
+    if (d.max_sm_mhz > 0) md << " (maximum SM clock " << fixed(d.max_sm_mhz, 0) << " MHz)";
+    md << "\n- " << d.scenes.size() << " scenes at " << first.scene.camera.width << "×" << first.scene.camera.height << ", " << d.variants.size()
        << " variants\n";
     md << "- Reference: Embree, " << d.grid * d.grid << " stratified cosine-distributed rays per pixel\n";
-    md << "- Times: median of " << d.runs << " runs after " << d.warmup << " warm-up, GPU timestamps around every pass, summed over the chain\n";
+    md << "- Times: per scene, every chain bound once (device-local memory), " << fixed(d.timing.warmup_ms, 0)
+       << " ms of continuous GPU work first, then " << d.timing.rounds << " rounds of " << d.timing.iterations
+       << " back-to-back iterations of every chain, interleaved" << (d.fetch_floor ? " with their fetch floors" : "")
+       << "; GPU timestamps around every pass; median and p10–p90 of the iterations\n";
+    md << "- SM clock while timing: " << detail::clocks_text(d.clocks) << "\n";
     md << "- Command: `" << meta.command << "`\n\n";
     md << "**How to read it.** Error is the RMSE of the variant's AO against the ray-traced reference over the pixels that show "
           "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution AO is compared after "
           "nearest upsampling to full resolution. *Default*: the variant's default parameters (seed presets, lengths scaled to "
           "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
-          "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median. "
+          "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median (p10–p90 likewise). "
+          "*Floor* is the variant's fetch floor: its passes' texel fetches at the same positions with none of the shading "
+          "(bench/report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
+          "variant is bound by its memory traffic, far above it by its arithmetic. *Raw NaN/Inf* and *raw out of [0, 1]* count "
+          "the values the passes computed before the guard that keeps the output finite and in range (all passes, all "
+          "scenes); the output itself is always finite. "
           "★ marks a Pareto-optimal variant: no other variant is both at least as fast and at least as accurate.\n\n";
     md << "![error against time](error_vs_time.png)\n\n";
 
     md << "## Variants, fastest first\n\n";
-    md << "| variant | ms | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | NaN/Inf |\n";
-    md << "|---|---:|---:|:-:|---:|:-:|---:|---:|\n";
+    md << "| variant | ms | p10–p90 | floor ms | × floor | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
+    md << "|---|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|---:|---:|\n";
     for (size_t i : detail::by_time(d.variants)) {
         const variant_record& v = d.variants[i];
-        md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | "
-           << fixed(v.rmse_calibrated, 4) << " | " << (v.pareto_calibrated ? "★" : "") << " | " << v.ao_instructions << " | " << v.non_finite
-           << " |\n";
+        md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << detail::range(v.ms_p10, v.ms_p90) << " | " << fixed(v.floor_ms, 3) << " | "
+           << fixed(v.floor_ratio, 2) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | " << fixed(v.rmse_calibrated, 4)
+           << " | " << (v.pareto_calibrated ? "★" : "") << " | " << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
+           << " | " << detail::raw_range(v.raw, v.raw_measured) << " |\n";
     }
 
     md << "\n## Scenes\n\n";
     md << "The reference's own noise (RMS of the per-pixel Monte-Carlo standard error) adds to a variant's RMSE in quadrature; "
           "it must stay well below the errors above.\n\n";
-    md << "| scene | size | AO radius | valid pixels | mean reference AO | reference noise | strip |\n";
-    md << "|---|---|---:|---:|---:|---:|---|\n";
+    md << "| scene | size | AO radius | valid pixels | mean reference AO | reference noise | SM clock while timed | strip |\n";
+    md << "|---|---|---:|---:|---:|---:|---|---|\n";
     for (const scene_record& s : d.scenes) {
         const auto strip = strips.find(s.scene.name);
         md << "| " << s.scene.name << (s.scene.renderer.point_cloud ? " (point cloud)" : "") << " | " << s.scene.camera.width << "×"
            << s.scene.camera.height << " | " << fixed(s.scene.ao_radius, 3) << " | " << s.valid_pixels << " | " << fixed(s.truth_mean, 4)
-           << " | " << fixed(s.truth.noise_rms, 4) << " | " << (strip == strips.end() ? "" : "[png](" + strip->second.path + ")") << " |\n";
+           << " | " << fixed(s.truth.noise_rms, 4) << " | " << (s.clocks.samples ? fixed(s.clocks.median, 0) + " MHz" : "–") << " | "
+           << (strip == strips.end() ? "" : "[png](" + strip->second.path + ")") << " |\n";
     }
     double best = std::numeric_limits<double>::infinity(), noise = 0;
     for (const variant_record& v : d.variants)
@@ -98,8 +132,8 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
           "calibrated error, fastest first.\n";
 
     md << "\n## Per scene\n\n";
-    md << "Columns: median ms; default RMSE, MAE, mean signed error (> 0: too light), 99th-percentile |error|; calibrated RMSE "
-          "and its power p; NaN/Inf pixels.\n";
+    md << "Columns: median ms and p10–p90; time / fetch floor; default RMSE, MAE, mean signed error (> 0: too light), "
+          "99th-percentile |error|; calibrated RMSE and its power p; raw NaN/Inf and out-of-range values (all passes).\n";
     for (size_t s = 0; s < d.scenes.size(); ++s) {
         md << "\n### " << d.scenes[s].scene.name << "\n\n";
         const auto strip = strips.find(d.scenes[s].scene.name);
@@ -108,14 +142,19 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
             for (size_t k = 0; k < strip->second.variants.size(); ++k) md << (k ? ", " : "") << "`" << strip->second.variants[k] << "`";
             md << ".\n\n";
         }
-        md << "| variant | ms | RMSE | MAE | signed | p99 | RMSE cal. | p | NaN/Inf |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        md << "| variant | ms | p10–p90 | × floor | RMSE | MAE | signed | p99 | RMSE cal. | p | raw NaN/Inf | raw out of [0, 1] |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (size_t i : detail::by_time(d.variants)) {
             const variant_record& v = d.variants[i];
             const run_record& r = v.runs[s];
             if (!r.ran()) continue;
-            md << "| `" << v.name << "` | " << fixed(r.ms, 3) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
+            aogen::vulkan::raw_counts raw;
+            for (const aogen::vulkan::raw_counts& c : r.raw) raw += c;
+            md << "| `" << v.name << "` | " << fixed(r.ms.median, 3) << " | " << detail::range(r.ms.p10, r.ms.p90) << " | "
+               << fixed(r.ms.median / r.floor_ms.median, 2) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
                << fixed(r.plain.mean_signed, 4) << " | " << fixed(r.plain.p99_abs, 3) << " | " << fixed(r.calibrated.rmse, 4) << " | "
-               << fixed(r.power, 2) << " | " << r.plain.non_finite << " |\n";
+               << fixed(r.power, 2) << " | " << detail::raw_non_finite(raw, !r.raw.empty()) << " | " << detail::raw_range(raw, !r.raw.empty())
+               << " |\n";
         }
     }
 
@@ -124,15 +163,16 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     else {
         md << "On the mesh-only scenes, each SSAO variant as scene selection makes it (the point-cloud fallback left out: the "
               "scenes have no point clouds) beside the same variant with the fallback compiled in. Instructions are the AO shader's "
-              "SPIR-V after spirv-opt; time is the median over the mesh-only scenes of the whole chain; saved = 1 − selected / "
-              "everything on.\n\n";
-        md << "| selected variant | AO instructions | everything on | saved | ms | everything on | saved | RMSE | everything on |\n";
-        md << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+              "SPIR-V after spirv-opt; times are the median over the mesh-only scenes of the whole chain, the two timed in the "
+              "same rounds, interleaved; the ratio is selected / everything on per scene and round (median, p10–p90): a "
+              "spread that straddles 1 is no saving; saved = 1 − selected / everything on.\n\n";
+        md << "| selected variant | AO instructions | everything on | saved | ms | everything on | time ratio | p10–p90 | RMSE | everything on |\n";
+        md << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const feature_saving& f : d.savings)
             md << "| `" << f.selected << "` | " << f.selected_instructions << " | " << f.everything_on_instructions << " | "
                << detail::saved(f.selected_instructions, f.everything_on_instructions) << " | " << fixed(f.selected_ms, 3) << " | "
-               << fixed(f.everything_on_ms, 3) << " | " << detail::saved(f.selected_ms, f.everything_on_ms) << " | " << fixed(f.selected_rmse, 4)
-               << " | " << fixed(f.everything_on_rmse, 4) << " |\n";
+               << fixed(f.everything_on_ms, 3) << " | " << fixed(f.ratio.median, 3) << " | " << fixed(f.ratio.p10, 3) << "–" << fixed(f.ratio.p90, 3)
+               << " | " << fixed(f.selected_rmse, 4) << " | " << fixed(f.everything_on_rmse, 4) << " |\n";
         md << "\nLeft out by selection: ";
         for (size_t i = 0; i < d.savings.front().left_out.size(); ++i) md << (i ? "; " : "") << d.savings.front().left_out[i];
         md << ".\n";

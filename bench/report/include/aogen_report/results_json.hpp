@@ -2,17 +2,26 @@
 //
 //     std::string text = aogen_report::results_json(data, meta);   // results.json
 //
-// Layout (numbers as measured; NaN times, when the device has no timestamps, are null):
-//   { "aogen_report": 1, "device": ..., "command": ..., "rays_per_pixel": ..., "runs": ..., "warmup": ...,
-//     "calibration": "ao^p, p fitted on the other scenes (leave-one-out)",
-//     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud}],
+// Layout (numbers as measured; times NaN — no timestamps, not timed — are null; "ms" is
+// always a median, "_p10"/"_p90" the nearest-rank percentiles of the same samples):
+//   { "aogen_report": 2, "device", "command", "rays_per_pixel", "complete": bool,
+//     "timing": {rounds, iterations, warmup_ms, fetch_floor},
+//     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
+//     "phases_s": {compile, trace, score, time, runs},
+//     "calibration": "...",
+//     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud, clocks}],
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
-//                   ms, rmse, rmse_calibrated, non_finite, pareto, pareto_calibrated,
-//                   scenes: [{scene, skipped | {ms, pass_ms, power,
+//                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, rmse, rmse_calibrated,
+//                   raw: {measured, nan, inf, below_zero, above_one}, pareto, pareto_calibrated,
+//                   scenes: [{scene, skipped | {ms, ms_p10, ms_p90, pass_ms, floor_ms, power,
+//                             raw: [{nan, inf, below_zero, above_one} per pass],
 //                             default: {rmse, mae, mean_signed, p99_abs, non_finite, pixels},
 //                             calibrated: {...}}]}],
 //     "feature_saving": [{selected, everything_on, selected_instructions, everything_on_instructions,
-//                         selected_ms, everything_on_ms, selected_rmse, everything_on_rmse, left_out}] }
+//                         selected_ms, everything_on_ms, ratio, ratio_p10, ratio_p90,
+//                         selected_rmse, everything_on_rmse, left_out}] }
+// "raw" counts what each pass computed before its finite/range guard (diagnostics.hpp);
+// "non_finite" of the metrics counts the shipped output, which the guard keeps finite.
 #pragma once
 
 #include "run.hpp"
@@ -22,7 +31,8 @@
 namespace aogen_report {
 
 struct report_meta {
-    std::string command; // how the report was made, for whoever reads it later
+    std::string command;   // how the report was made, for whoever reads it later
+    bool complete = true;  // false while scenes are still to come (written after each scene)
 };
 
 namespace detail {
@@ -35,17 +45,78 @@ inline nlohmann::json metrics_json(const error_metrics& m)
             {"non_finite", m.non_finite}, {"pixels", m.pixels}};
 }
 
+inline nlohmann::json raw_json(const aogen::vulkan::raw_counts& r)
+{
+    return {{"nan", r.nan}, {"inf", r.inf}, {"below_zero", r.below_zero}, {"above_one", r.above_one}};
+}
+
+inline nlohmann::json clocks_json(const clock_record& c)
+{
+    return {{"min", number(c.min)}, {"median", number(c.median)}, {"max", number(c.max)}, {"samples", c.samples}};
+}
+
+inline nlohmann::json run_json(const run_record& r, const std::string& scene)
+{
+    nlohmann::json e{{"scene", scene}};
+    if (!r.ran()) {
+        e["skipped"] = r.skipped;
+        return e;
+    }
+    std::vector<nlohmann::json> passes, raw;
+    for (const aogen::vulkan::spread& p : r.pass_ms) passes.push_back(number(p.median));
+    for (const aogen::vulkan::raw_counts& c : r.raw) raw.push_back(raw_json(c));
+    e["ms"] = number(r.ms.median);
+    e["ms_p10"] = number(r.ms.p10);
+    e["ms_p90"] = number(r.ms.p90);
+    e["pass_ms"] = passes;
+    e["floor_ms"] = number(r.floor_ms.median);
+    e["power"] = r.power;
+    e["raw"] = raw;
+    e["default"] = metrics_json(r.plain);
+    e["calibrated"] = metrics_json(r.calibrated);
+    return e;
+}
+
+inline nlohmann::json variant_json(const variant_record& v, const std::vector<scene_record>& scenes)
+{
+    nlohmann::json per_scene = nlohmann::json::array();
+    for (size_t s = 0; s < v.runs.size(); ++s) per_scene.push_back(run_json(v.runs[s], scenes[s].scene.name));
+    nlohmann::json raw = raw_json(v.raw);
+    raw["measured"] = v.raw_measured;
+    return {{"name", v.name},
+            {"hash", aogen::hash(v.v)},
+            {"technique", aogen::names::name_of(aogen::technique_names, v.v.tech, "technique")},
+            {"stage", aogen::names::name_of(aogen::pipeline_stage_names, v.v.stage, "stage")},
+            {"passes", v.passes},
+            {"spirv_instructions", v.instructions},
+            {"ao_instructions", v.ao_instructions},
+            {"ms", number(v.ms)},
+            {"ms_p10", number(v.ms_p10)},
+            {"ms_p90", number(v.ms_p90)},
+            {"floor_ms", number(v.floor_ms)},
+            {"floor_ratio", number(v.floor_ratio)},
+            {"rmse", number(v.rmse)},
+            {"rmse_calibrated", number(v.rmse_calibrated)},
+            {"raw", raw},
+            {"pareto", v.pareto},
+            {"pareto_calibrated", v.pareto_calibrated},
+            {"scenes", per_scene}};
+}
+
 } // namespace detail
 
 inline std::string results_json(const report_data& d, const report_meta& meta)
 {
     nlohmann::json j;
-    j["aogen_report"] = 1;
+    j["aogen_report"] = 2;
     j["device"] = d.device;
     j["command"] = meta.command;
+    j["complete"] = meta.complete;
     j["rays_per_pixel"] = d.grid * d.grid;
-    j["runs"] = d.runs;
-    j["warmup"] = d.warmup;
+    j["timing"] = {{"rounds", d.timing.rounds}, {"iterations", d.timing.iterations}, {"warmup_ms", d.timing.warmup_ms}, {"fetch_floor", d.fetch_floor}};
+    j["clocks"] = detail::clocks_json(d.clocks);
+    j["clocks"]["max_sm_mhz"] = detail::number(d.max_sm_mhz > 0 ? d.max_sm_mhz : std::nan(""));
+    j["phases_s"] = {{"compile", d.phases.compile}, {"trace", d.phases.trace}, {"score", d.phases.score}, {"time", d.phases.time}, {"runs", d.phases.runs}};
     j["calibration"] = "ao^p, p fitted on the other scenes (leave-one-out), least squares, each scene weighted equally";
     j["scenes"] = nlohmann::json::array();
     for (const scene_record& s : d.scenes)
@@ -56,38 +127,10 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                {"valid_pixels", s.valid_pixels},
                                {"truth_mean", s.truth_mean},
                                {"truth_noise_rms", s.truth.noise_rms},
-                               {"point_cloud", s.scene.renderer.point_cloud}});
+                               {"point_cloud", s.scene.renderer.point_cloud},
+                               {"clocks", detail::clocks_json(s.clocks)}});
     j["variants"] = nlohmann::json::array();
-    for (const variant_record& v : d.variants) {
-        nlohmann::json per_scene = nlohmann::json::array();
-        for (size_t s = 0; s < v.runs.size(); ++s) {
-            const run_record& r = v.runs[s];
-            nlohmann::json e{{"scene", d.scenes[s].scene.name}};
-            if (!r.ran()) e["skipped"] = r.skipped;
-            else {
-                e["ms"] = detail::number(r.ms);
-                e["pass_ms"] = r.pass_ms;
-                e["power"] = r.power;
-                e["default"] = detail::metrics_json(r.plain);
-                e["calibrated"] = detail::metrics_json(r.calibrated);
-            }
-            per_scene.push_back(e);
-        }
-        j["variants"].push_back({{"name", v.name},
-                                 {"hash", aogen::hash(v.v)},
-                                 {"technique", aogen::names::name_of(aogen::technique_names, v.v.tech, "technique")},
-                                 {"stage", aogen::names::name_of(aogen::pipeline_stage_names, v.v.stage, "stage")},
-                                 {"passes", v.passes},
-                                 {"spirv_instructions", v.instructions},
-                                 {"ao_instructions", v.ao_instructions},
-                                 {"ms", detail::number(v.ms)},
-                                 {"rmse", detail::number(v.rmse)},
-                                 {"rmse_calibrated", detail::number(v.rmse_calibrated)},
-                                 {"non_finite", v.non_finite},
-                                 {"pareto", v.pareto},
-                                 {"pareto_calibrated", v.pareto_calibrated},
-                                 {"scenes", per_scene}});
-    }
+    for (const variant_record& v : d.variants) j["variants"].push_back(detail::variant_json(v, d.scenes));
     j["feature_saving"] = nlohmann::json::array();
     for (const feature_saving& f : d.savings)
         j["feature_saving"].push_back({{"selected", f.selected},
@@ -96,6 +139,9 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                        {"everything_on_instructions", f.everything_on_instructions},
                                        {"selected_ms", detail::number(f.selected_ms)},
                                        {"everything_on_ms", detail::number(f.everything_on_ms)},
+                                       {"ratio", detail::number(f.ratio.median)},
+                                       {"ratio_p10", detail::number(f.ratio.p10)},
+                                       {"ratio_p90", detail::number(f.ratio.p90)},
                                        {"selected_rmse", f.selected_rmse},
                                        {"everything_on_rmse", f.everything_on_rmse},
                                        {"left_out", f.left_out}});

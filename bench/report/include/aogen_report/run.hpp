@@ -1,32 +1,50 @@
 // aogen_report/run.hpp — the report's measurements: every variant on every scene against
-// the ray-traced ground truth, with its GPU time.
+// the ray-traced ground truth, with its GPU time beside its fetch floor's.
 //
 // WHAT
 //   run_report(settings) does, in order:
-//     1. per scene: the G-buffer (Embree ray cast) and the reference AO image
-//        (reference.hpp, grid² rays per pixel, with its Monte-Carlo noise);
-//     2. per variant: one Vulkan chain (compiled once), run on each scene it can run on
-//        (settings.hpp) with the variant's default parameters; the AO read back,
-//        upsampled to full resolution, compared with the reference (metrics.hpp); the
-//        median GPU time of `runs` timed runs after `warmup` (timestamp queries, per pass);
-//     3. per variant: the calibrated column (calibrate.hpp): ao^p, p fitted on the other
-//        scenes, scored on this one;
-//     4. summaries: per variant the mean RMSE over its scenes and the median of its
-//        per-scene times; Pareto-optimal variants (pareto.hpp) by time against default
-//        and against calibrated RMSE;
-//     5. the feature saving: for each SSAO variant without the point-cloud fallback, its
-//        twin with the fallback ("everything on"), run right after it on the mesh-only
-//        scenes — SPIR-V instructions and time of the scene-selected variant against the twin.
+//     1. compile: every distinct shader of every variant — as shipped, in diagnostic form
+//        (codegen::options::diagnostics) and its fetch floor (fetch_floor.hpp) — once, on
+//        all cores (vulkan::spirv_cache), then one set of pipelines per variant for the
+//        whole run, on one Vulkan device;
+//     2. per scene:
+//        a. the G-buffer (Embree ray cast) and the reference AO image (reference.hpp,
+//           grid² rays per pixel, with its Monte-Carlo noise); the G-buffer uploaded once
+//           per depth convention and normal space a variant asks for;
+//        b. scoring: each variant that can run on the scene (settings.hpp) runs once in
+//           its diagnostic form with its default parameters: the AO read back (the
+//           diagnostic output is the shipped one), upsampled to full resolution and
+//           compared with the reference (metrics.hpp); its raw values before the guard
+//           counted (NaN, Inf, out of [0, 1], per pass);
+//        c. timing: the shipped chains, their fetch floors and the point-cloud twins
+//           bound at once and timed together (vulkan::time_chains): a warm-up of
+//           continuous GPU work, then rounds in which every chain runs back to back,
+//           interleaved — variant, floor, twin, next variant, ... — so every time in the
+//           report was taken in the same state of the GPU's clock as every other;
+//           nvidia-smi's SM clock sampled meanwhile (clocks.hpp); chains are bound in
+//           groups whose outputs fit settings.bound_bytes;
+//        d. the summaries of everything so far (below), handed to settings.scene_done —
+//           the program writes results.json and report.md there, so an interrupted run
+//           keeps every scene it finished;
+//   Summaries: the calibrated column (calibrate.hpp: ao^p, p fitted on the other scenes);
+//   per variant the mean RMSE over its scenes, the median of its per-scene median times,
+//   p10 and p90, its floor and time / floor; Pareto-optimal variants by time against
+//   default and calibrated RMSE; the feature saving: each SSAO variant without the
+//   point-cloud fallback against its twin with it ("everything on") on the mesh-only
+//   scenes — SPIR-V instructions, and the time ratio round by round.
 //   Errors depend only on the inputs: the same settings give the same numbers; only the
-//   times vary from run to run.
+//   times (and the clocks) vary from run to run.
 //
 // USAGE
 //     aogen_report::report_settings s;
 //     s.scenes = {...};  s.variants = aogen::default_matrix();
+//     s.scene_done = [](const aogen_report::report_data& so_far) { ... };
 //     aogen_report::report_data r = aogen_report::run_report(s);
 #pragma once
 
 #include "calibrate.hpp"
+#include "clocks.hpp"
+#include "fetch_floor.hpp"
 #include "images.hpp"
 #include "metrics.hpp"
 #include "pareto.hpp"
@@ -34,28 +52,43 @@
 #include "settings.hpp"
 
 #include <aogen/selection.hpp>
+#include <aogen/vulkan/chain.hpp>
 #include <aogen/vulkan/timing.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <functional>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace aogen_report {
+
+struct report_data;
 
 struct report_settings {
     std::vector<aogen::scenes::scene> scenes;
     std::vector<aogen::variant> variants;
     int width = 0, height = 0;       // every scene's resolution; 0: each scene's own
     int grid = 64;                   // reference rays per pixel: grid × grid
-    int runs = 7, warmup = 1;        // timed runs per variant and scene
+    aogen::vulkan::timing_options timing{5, 4, 200.0}; // rounds × iterations per chain and scene, warm-up ms
+    bool fetch_floor = true;         // time each variant's fetch floor beside it
     bool feature_saving = true;      // run the point-cloud twins of SSAO variants
+    size_t bound_bytes = size_t(2) << 30; // output images bound at once for timing, at most
     aogen::vulkan::device_options device;
     std::function<void(const std::string&)> progress = [](const std::string&) {};
+    std::function<void(const report_data&)> scene_done = [](const report_data&) {};
+};
+
+// A distribution of SM clock readings (MHz) while timing.
+struct clock_record {
+    double min = std::numeric_limits<double>::quiet_NaN(), median = min, max = min;
+    size_t samples = 0;
 };
 
 struct scene_record {
@@ -63,17 +96,44 @@ struct scene_record {
     reference truth;
     size_t valid_pixels = 0;
     double truth_mean = 0;           // mean reference AO over valid pixels
+    clock_record clocks;             // SM clock while this scene was timed (nvidia-smi)
     bool mesh_only() const { return !scene.renderer.point_cloud; }
+};
+
+// A variant's AO as read back: the R8 target's 8-bit values at the target's resolution
+// (a quarter of the screen at half resolution), kept for calibration and the strips at a
+// quarter of the memory of floats; full() is the full-resolution image they are scored at.
+struct ao_readback {
+    int width = 0, height = 0, factor = 1; // target size; full resolution = ×factor (clamped)
+    std::vector<uint8_t> unorm;
+
+    static ao_readback of(const aogen::vulkan::chain_result& r, int factor)
+    {
+        ao_readback a{r.width, r.height, factor, std::vector<uint8_t>(r.ao.size())};
+        for (size_t i = 0; i < r.ao.size(); ++i) a.unorm[i] = uint8_t(std::lround(r.ao[i] * 255.0f)); // exact: r.ao[i] = k / 255
+        return a;
+    }
+    // Nearest upsampling to the screen's W × H (images.hpp), as floats k / 255.
+    std::vector<float> full(int W, int H) const
+    {
+        std::vector<float> ao(unorm.size());
+        for (size_t i = 0; i < unorm.size(); ++i) ao[i] = unorm[i] / 255.0f;
+        return upsample(ao, width, height, factor, W, H);
+    }
 };
 
 // One variant on one scene.
 struct run_record {
-    std::string skipped;             // why it did not run; "" when it ran
-    error_metrics plain, calibrated; // default parameters; ao^power
-    double power = 1;                // fitted on the other scenes
-    std::vector<double> pass_ms;     // median GPU time per pass
-    double ms = std::numeric_limits<double>::quiet_NaN(); // their sum
-    std::vector<float> ao;           // full resolution, as read back (upsampled)
+    std::string skipped;                          // why it did not run; "" when it ran
+    error_metrics plain, calibrated;              // default parameters; ao^power
+    double power = 1;                             // fitted on the other scenes
+    calibration_scene summary;                    // of the default-parameter AO
+    std::vector<aogen::vulkan::raw_counts> raw;   // per pass, before the guard; empty: not measured
+    std::vector<aogen::vulkan::spread> pass_ms;   // per pass
+    aogen::vulkan::spread ms;                     // the whole chain, per iteration
+    aogen::vulkan::spread floor_ms;               // its fetch floor, timed in the same rounds
+    std::vector<double> round_ms;                 // the chain's median of each timing round
+    ao_readback ao;                               // as read back (default parameters)
     bool ran() const { return skipped.empty(); }
 };
 
@@ -83,11 +143,13 @@ struct variant_record {
     std::vector<std::string> passes;
     std::vector<uint32_t> instructions; // SPIR-V instructions per shader (after spirv-opt)
     uint32_t ao_instructions = 0;       // of the AO pass's shader (fragment: its fragment shader)
-    std::vector<run_record> runs;       // one per scene, in settings order
+    std::vector<run_record> runs;       // one per scene so far, in settings order
     // Summaries over the scenes it ran on.
-    double rmse = std::numeric_limits<double>::quiet_NaN(), rmse_calibrated = std::numeric_limits<double>::quiet_NaN();
-    double ms = std::numeric_limits<double>::quiet_NaN();
-    size_t non_finite = 0;
+    double rmse = std::numeric_limits<double>::quiet_NaN(), rmse_calibrated = rmse;
+    double ms = rmse, ms_p10 = rmse, ms_p90 = rmse; // medians over scenes of each scene's median, p10, p90
+    double floor_ms = rmse, floor_ratio = rmse;     // median over scenes of the floor, and of time / floor
+    aogen::vulkan::raw_counts raw;                  // summed over scenes and passes
+    bool raw_measured = false;                      // a diagnostic build ran (fragment passes need fragment stores)
     bool pareto = false, pareto_calibrated = false;
 };
 
@@ -96,46 +158,138 @@ struct feature_saving {
     std::string selected, everything_on;
     uint32_t selected_instructions = 0, everything_on_instructions = 0; // AO pass
     double selected_ms = 0, everything_on_ms = 0;                       // median over the mesh-only scenes
+    aogen::vulkan::spread ratio;                                        // selected / everything on, per scene and round
     double selected_rmse = 0, everything_on_rmse = 0;                   // mean over the mesh-only scenes
     std::vector<std::string> left_out;                                  // what selection left out, and why
 };
 
+// Wall-clock seconds of the report's phases.
+struct phase_times {
+    double compile = 0, trace = 0, score = 0, time = 0;
+    size_t runs = 0; // variant × scene runs scored (twins included)
+};
+
 struct report_data {
     std::string device;
-    int grid = 0, runs = 0, warmup = 0;
-    std::vector<scene_record> scenes;
+    int grid = 0;
+    aogen::vulkan::timing_options timing;
+    bool fetch_floor = true;
+    double max_sm_mhz = 0;                 // nvidia-smi's clocks.max.sm; 0 when unknown
+    clock_record clocks;                   // every SM clock reading while timing
+    std::vector<scene_record> scenes;      // the scenes done so far
     std::vector<variant_record> variants;
+    std::vector<variant_record> twins;     // the point-cloud twins of the feature saving
     std::vector<feature_saving> savings;
+    phase_times phases;
 };
 
 namespace detail {
 
 inline double median(std::vector<double> v)
 {
-    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+    return aogen::vulkan::spread_of(std::move(v)).median;
+}
+
+inline clock_record clocks_of(std::vector<double> mhz)
+{
+    clock_record c;
+    c.samples = mhz.size();
+    if (mhz.empty()) return c;
+    std::sort(mhz.begin(), mhz.end());
+    c.min = mhz.front(), c.max = mhz.back(), c.median = aogen::vulkan::spread_of(mhz).median;
+    return c;
+}
+
+// Runs f(i) for i in [0, n) on every core; the first exception is rethrown.
+template <class F>
+void parallel_for(size_t n, F f)
+{
+    std::atomic<size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex m;
+    const auto work = [&] {
+        for (size_t i = next++; i < n; i = next++) {
+            try {
+                f(i);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(m);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
 }
 
 // The compiled size of each of the variant's shaders, in chain order.
-inline void count_instructions(variant_record& r)
+inline void count_instructions(variant_record& r, aogen::vulkan::spirv_cache& cache)
 {
     for (const aogen::codegen::shader_source& s : aogen::codegen::generate(r.v)) {
-        const aogen::compile::compiled c = aogen::compile::compile(s.glsl, s.stage, s.name, {aogen::compile::target::spv});
-        r.instructions.push_back(c.refl.spirv_instructions);
-        if (s.pass == aogen::pass_kind::ao && s.stage != aogen::shader_stage::vertex) r.ao_instructions = c.refl.spirv_instructions;
+        const uint32_t n = aogen::compile::count_instructions(cache.get(s), s.name);
+        r.instructions.push_back(n);
+        if (s.pass == aogen::pass_kind::ao && s.stage != aogen::shader_stage::vertex) r.ao_instructions = n;
         if (s.stage != aogen::shader_stage::vertex) r.passes.push_back(aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass"));
     }
 }
 
-// A scene's G-buffers as the harness takes them, one per depth convention and normal
-// space a variant asks for, ray-cast on first use.
+// One variant's pipelines for the whole run: as shipped (timed), in diagnostic form
+// (scored; none where the device cannot store from fragment shaders) and its fetch floor.
+struct compiled_variant {
+    std::unique_ptr<aogen::vulkan::chain> shipped, diagnostic;
+    std::unique_ptr<aogen::vulkan::pass_pipelines> floor; // null for twins and without floors
+};
+
+// Every shader the run needs, for one compile_all.
+inline std::vector<aogen::codegen::shader_source> sources_of(const aogen::variant& v, bool diagnostic, bool floor)
+{
+    std::vector<aogen::codegen::shader_source> out = aogen::codegen::generate(v);
+    aogen::codegen::options d;
+    d.diagnostics = true;
+    if (diagnostic)
+        for (aogen::codegen::shader_source& s : aogen::codegen::generate(v, d)) out.push_back(std::move(s));
+    if (floor)
+        for (aogen::codegen::shader_source& s : floor_sources(v)) out.push_back(std::move(s));
+    return out;
+}
+
+inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const aogen::variant& v, bool floor, aogen::vulkan::spirv_cache& cache)
+{
+    compiled_variant c;
+    c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, v, aogen::vulkan::chain_options{}, &cache);
+    if (v.stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
+        c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, v, aogen::vulkan::chain_options{true}, &cache);
+    if (floor) {
+        const aogen::variant f = floor_variant(v);
+        c.floor = std::make_unique<aogen::vulkan::pass_pipelines>(ctx, "the fetch floor of " + aogen::to_name(v), f.stage, f.workgroup_x,
+                                                                  f.workgroup_y, floor_sources(v), &cache);
+    }
+    return c;
+}
+
+// A scene's G-buffers: on the host, ray-cast on first use, one per depth convention and
+// normal space a variant asks for; and uploaded, once each, for every chain to share.
 class gbuffer_cache {
 public:
-    gbuffer_cache(const aogen::scenes::scene& s, const aogen::truth::scene& t) : scene_(s), tracer_(t) {}
+    gbuffer_cache(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, const aogen::truth::scene& t) : ctx_(ctx), scene_(s), tracer_(t) {}
 
-    const aogen::vulkan::gbuffer& get(const aogen::variant& v)
+    const aogen::vulkan::gbuffer& host(const aogen::variant& v) { return entry(v).host; }
+    const aogen::vulkan::gpu_gbuffer& gpu(const aogen::variant& v)
+    {
+        entry_type& e = entry(v);
+        if (!e.gpu) e.gpu = std::make_unique<aogen::vulkan::gpu_gbuffer>(ctx_, e.host);
+        return *e.gpu;
+    }
+
+private:
+    struct entry_type {
+        aogen::vulkan::gbuffer host;
+        std::unique_ptr<aogen::vulkan::gpu_gbuffer> gpu;
+    };
+    entry_type& entry(const aogen::variant& v)
     {
         const aogen::scenes::normal_space space =
             v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
@@ -146,33 +300,69 @@ public:
         o.use_scene_normals = false;
         o.normals = space;
         const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(for_variant(scene_, v), tracer_, o);
-        return cache_.emplace(key, aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(g)).first->second;
+        return cache_.emplace(key, entry_type{aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(g), nullptr}).first->second;
     }
 
-private:
+    aogen::vulkan::context& ctx_;
     const aogen::scenes::scene& scene_;
     const aogen::truth::scene& tracer_;
-    std::map<int, aogen::vulkan::gbuffer> cache_;
+    std::map<int, entry_type> cache_;
 };
 
-// Runs `c` on one scene: AO at full resolution, metrics with default parameters, times.
-inline run_record run_on_scene(aogen::vulkan::chain& c, gbuffer_cache& gbuffers, const scene_record& s, const report_settings& settings)
+// What a record needs of its scene to run, or why it cannot.
+inline std::string why_not(const variant_record& r, const scene_record& s, bool twin)
+{
+    if (twin && !s.mesh_only()) return "not a mesh-only scene";
+    return cannot_run(r.v, s.scene);
+}
+
+// Scores `c` on one scene: runs its diagnostic build once (the shipped one where there is
+// none), reads the AO back, counts raw values; metrics follow in finish_scoring().
+inline run_record score(const compiled_variant& c, gbuffer_cache& gbuffers, const scene_record& s)
 {
     run_record r;
-    r.skipped = cannot_run(c.var(), s.scene);
-    if (!r.ran()) return r;
-    const aogen::vulkan::gbuffer& g = gbuffers.get(c.var());
-    const aogen::vulkan::chain_settings cs = default_settings(c.var(), s.scene);
-    const aogen::vulkan::chain_result out = c.run(g, cs);
-    const int factor = out.width == g.width ? 1 : 2;
-    r.ao = upsample(out.ao, out.width, out.height, factor, g.width, g.height);
-    r.plain = compare(r.ao, s.truth.ao, s.truth.valid);
-    r.pass_ms = aogen::vulkan::median_pass_ms(c, g, cs, settings.runs, settings.warmup);
-    if (!r.pass_ms.empty()) {
-        r.ms = 0;
-        for (double ms : r.pass_ms) r.ms += ms;
-    }
+    const aogen::vulkan::chain& chain = c.diagnostic ? *c.diagnostic : *c.shipped;
+    const aogen::vulkan::gpu_gbuffer& g = gbuffers.gpu(chain.var());
+    const aogen::vulkan::chain_result out = chain.bind(g, default_settings(chain.var(), s.scene))->run_once();
+    r.raw = out.raw;
+    r.ao = ao_readback::of(out, out.width == g.width() ? 1 : 2);
     return r;
+}
+
+// The metrics of a scored run (on a worker thread: compare and summarise are the slow part).
+inline void finish_scoring(run_record& r, const scene_record& s)
+{
+    const std::vector<float> ao = r.ao.full(s.truth.width, s.truth.height);
+    r.plain = compare(ao, s.truth.ao, s.truth.valid);
+    r.summary = summarise(ao, s.truth.ao, s.truth.valid);
+}
+
+// One chain to time: which record and scene it belongs to, and whether it is the floor.
+struct timed_chain {
+    run_record* run = nullptr;
+    bool floor = false;
+    std::unique_ptr<aogen::vulkan::bound_chain> bound;
+};
+
+inline size_t output_bytes(const aogen::vulkan::bound_chain& b) { return b.passes().size() * size_t(b.width()) * b.height(); }
+
+// Times `chains` together (interleaved) and stores each one's times in its run record.
+inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& chains, const aogen::vulkan::timing_options& o)
+{
+    std::vector<const aogen::vulkan::bound_chain*> bound;
+    for (const timed_chain& c : chains) bound.push_back(c.bound.get());
+    const aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, bound, o);
+    if (t.chains.empty()) return; // no timestamps
+    for (size_t i = 0; i < chains.size(); ++i) {
+        run_record& r = *chains[i].run;
+        if (chains[i].floor) {
+            r.floor_ms = t.chains[i].total;
+            continue;
+        }
+        r.ms = t.chains[i].total;
+        r.pass_ms = t.chains[i].passes;
+        r.round_ms = t.chains[i].round_ms;
+    }
 }
 
 // The calibrated column of one variant: leave-one-out powers over the scenes it ran on.
@@ -180,16 +370,14 @@ inline void calibrate(variant_record& v, const std::vector<scene_record>& scenes
 {
     std::vector<calibration_scene> summaries;
     std::vector<size_t> index;
-    for (size_t s = 0; s < scenes.size(); ++s)
-        if (v.runs[s].ran()) {
-            summaries.push_back(summarise(v.runs[s].ao, scenes[s].truth.ao, scenes[s].truth.valid));
-            index.push_back(s);
-        }
+    for (size_t s = 0; s < v.runs.size(); ++s)
+        if (v.runs[s].ran()) summaries.push_back(v.runs[s].summary), index.push_back(s);
     const std::vector<double> powers = leave_one_out_powers(summaries);
     for (size_t k = 0; k < index.size(); ++k) {
         run_record& r = v.runs[index[k]];
         r.power = powers[k];
-        r.calibrated = compare(apply_power(r.ao, r.power), scenes[index[k]].truth.ao, scenes[index[k]].truth.valid);
+        const reference& truth = scenes[index[k]].truth;
+        r.calibrated = compare(apply_power(r.ao.full(truth.width, truth.height), r.power), truth.ao, truth.valid);
     }
 }
 
@@ -197,15 +385,20 @@ inline void summarise(variant_record& v)
 {
     double plain = 0, calibrated = 0;
     int count = 0;
-    std::vector<double> times;
+    std::vector<double> ms, p10, p90, floors, ratios;
+    v.raw = {};
+    v.raw_measured = false;
     for (const run_record& r : v.runs) {
         if (!r.ran()) continue;
         plain += r.plain.rmse, calibrated += r.calibrated.rmse, ++count;
-        v.non_finite += r.plain.non_finite;
-        if (std::isfinite(r.ms)) times.push_back(r.ms);
+        for (const aogen::vulkan::raw_counts& c : r.raw) v.raw += c;
+        v.raw_measured = v.raw_measured || !r.raw.empty();
+        ms.push_back(r.ms.median), p10.push_back(r.ms.p10), p90.push_back(r.ms.p90);
+        floors.push_back(r.floor_ms.median), ratios.push_back(r.ms.median / r.floor_ms.median);
     }
     if (count > 0) v.rmse = plain / count, v.rmse_calibrated = calibrated / count;
-    v.ms = median(times);
+    v.ms = median(ms), v.ms_p10 = median(p10), v.ms_p90 = median(p90);
+    v.floor_ms = median(floors), v.floor_ratio = median(ratios);
 }
 
 inline void mark_pareto(std::vector<variant_record>& variants)
@@ -218,25 +411,50 @@ inline void mark_pareto(std::vector<variant_record>& variants)
 
 // The feature saving of `selected` against `twin`, the same variant with every feature
 // compiled in, over the scenes both ran on; none when they share no scene.
-inline std::optional<feature_saving> compare_twin(const variant_record& selected, const variant_record& twin, const std::vector<scene_record>& scenes)
+inline std::optional<feature_saving> compare_twin(const variant_record& selected, const variant_record& twin, size_t scene_count)
 {
     feature_saving f;
     f.selected = selected.name, f.everything_on = twin.name;
     f.selected_instructions = selected.ao_instructions, f.everything_on_instructions = twin.ao_instructions;
-    std::vector<double> ms_selected, ms_all;
+    std::vector<double> ms_selected, ms_all, ratios;
     int count = 0;
-    for (size_t s = 0; s < scenes.size(); ++s) {
-        if (!twin.runs[s].ran() || !selected.runs[s].ran()) continue;
-        ms_selected.push_back(selected.runs[s].ms), ms_all.push_back(twin.runs[s].ms);
-        f.selected_rmse += selected.runs[s].plain.rmse, f.everything_on_rmse += twin.runs[s].plain.rmse, ++count;
+    for (size_t s = 0; s < scene_count; ++s) {
+        const run_record &a = selected.runs[s], &b = twin.runs[s];
+        if (!a.ran() || !b.ran()) continue;
+        ms_selected.push_back(a.ms.median), ms_all.push_back(b.ms.median);
+        // Round by round: both were timed in the same rounds, interleaved.
+        for (size_t k = 0; k < std::min(a.round_ms.size(), b.round_ms.size()); ++k) ratios.push_back(a.round_ms[k] / b.round_ms[k]);
+        f.selected_rmse += a.plain.rmse, f.everything_on_rmse += b.plain.rmse, ++count;
     }
     if (count == 0) return std::nullopt;
     f.selected_ms = median(ms_selected), f.everything_on_ms = median(ms_all);
+    f.ratio = aogen::vulkan::spread_of(ratios);
     f.selected_rmse /= count, f.everything_on_rmse /= count;
     aogen::scene_needs mesh_scene;
     mesh_scene.normals = selected.v.normals;
     for (const aogen::left_out_feature& l : aogen::features(selected.v, &mesh_scene).left_out) f.left_out.push_back(l.feature + ": " + l.why);
     return f;
+}
+
+// The summaries of everything measured so far (calibration, medians, Pareto, savings).
+inline void summarise_all(report_data& out, const std::vector<int>& twin_of)
+{
+    parallel_for(out.variants.size() + out.twins.size(), [&](size_t i) {
+        variant_record& v = i < out.variants.size() ? out.variants[i] : out.twins[i - out.variants.size()];
+        calibrate(v, out.scenes);
+        summarise(v);
+    });
+    mark_pareto(out.variants);
+    out.savings.clear();
+    for (size_t t = 0; t < out.twins.size(); ++t) {
+        const std::optional<feature_saving> f = compare_twin(out.variants[size_t(twin_of[t])], out.twins[t], out.scenes.size());
+        if (f) out.savings.push_back(*f);
+    }
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 } // namespace detail
@@ -261,66 +479,119 @@ inline scene_record prepare_scene(aogen::scenes::scene s, const aogen::truth::sc
 
 inline report_data run_report(const report_settings& settings)
 {
+    using clock = std::chrono::steady_clock;
     if (settings.scenes.empty()) aogen::fail("report", "no scenes", "valid: at least one scene");
     if (settings.variants.empty()) aogen::fail("report", "no variants", "valid: at least one variant");
     report_data out;
-    out.grid = settings.grid, out.runs = settings.runs, out.warmup = settings.warmup;
-    // First: a missing device fails before any tracing.
-    auto ctx = std::make_unique<aogen::vulkan::context>(settings.device);
-    out.device = ctx->device_name();
-    bool graphics_ran = false;
+    out.grid = settings.grid, out.timing = settings.timing, out.fetch_floor = settings.fetch_floor;
+    // First: a missing device fails before any compiling or tracing.
+    aogen::vulkan::context ctx(settings.device);
+    out.device = ctx.device_name();
+    clock_monitor clocks(ctx.cpu() ? "" : ctx.device_name());
+    out.max_sm_mhz = clocks.max_mhz();
 
-    std::vector<std::unique_ptr<aogen::truth::scene>> tracers;
-    for (size_t i = 0; i < settings.scenes.size(); ++i) {
-        const aogen::scenes::scene& s = settings.scenes[i];
-        settings.progress("[scene " + std::to_string(i + 1) + "/" + std::to_string(settings.scenes.size()) + "] " + s.name +
-                          ": G-buffer and reference (" + std::to_string(settings.grid * settings.grid) + " rays per pixel)");
-        tracers.push_back(std::make_unique<aogen::truth::scene>());
-        s.build(*tracers.back());
-        out.scenes.push_back(prepare_scene(s, *tracers.back(), settings));
-    }
-    std::vector<detail::gbuffer_cache> gbuffers;
-    for (size_t i = 0; i < out.scenes.size(); ++i) gbuffers.emplace_back(out.scenes[i].scene, *tracers[i]);
-
-    const auto run_variant = [&](const aogen::variant& v, bool mesh_only_scenes) {
-        variant_record r;
-        r.v = v;
-        r.name = aogen::to_name(v);
-        detail::count_instructions(r);
-        // On lavapipe, compute timestamps taken after a graphics pipeline ran on the same
-        // device come out ~100x too small, so a compute variant after a fragment one gets a
-        // fresh device there. Only there: NVIDIA's driver refuses new instances after a few
-        // dozen, and the first variants on a fresh device timed up to 3x fast on an H200.
-        const bool fragment = v.stage == aogen::pipeline_stage::fragment;
-        if (ctx->cpu() && graphics_ran && !fragment)
-            ctx.reset(), ctx = std::make_unique<aogen::vulkan::context>(settings.device), graphics_ran = false;
-        graphics_ran = graphics_ran || fragment;
-        aogen::vulkan::chain c(*ctx, v);
-        for (size_t s = 0; s < out.scenes.size(); ++s) {
-            if (mesh_only_scenes && !out.scenes[s].mesh_only()) {
-                r.runs.push_back({"not a mesh-only scene"});
-                continue;
-            }
-            r.runs.push_back(detail::run_on_scene(c, gbuffers[s], out.scenes[s], settings));
+    // The records: the variants, then the point-cloud twins of the SSAO ones without it.
+    std::vector<int> twin_of; // per twin, the index of its selected variant
+    for (const aogen::variant& v : settings.variants) out.variants.push_back({v, aogen::to_name(v)});
+    if (settings.feature_saving)
+        for (size_t i = 0; i < out.variants.size(); ++i) {
+            const aogen::variant& v = out.variants[i].v;
+            if (v.tech != aogen::technique::ssao || v.point_cloud_fallback) continue;
+            aogen::variant all = v;
+            all.point_cloud_fallback = true;
+            out.twins.push_back({all, aogen::to_name(all)});
+            twin_of.push_back(int(i));
         }
-        detail::calibrate(r, out.scenes);
-        detail::summarise(r);
-        return r;
-    };
-    for (size_t i = 0; i < settings.variants.size(); ++i) {
-        settings.progress("[variant " + std::to_string(i + 1) + "/" + std::to_string(settings.variants.size()) + "] " +
-                          aogen::to_name(settings.variants[i]));
-        out.variants.push_back(run_variant(settings.variants[i], false));
-        // The twin right after its variant: both timed in the same state of the device.
-        const variant_record& selected = out.variants.back();
-        if (!settings.feature_saving || selected.v.tech != aogen::technique::ssao || selected.v.point_cloud_fallback) continue;
-        aogen::variant all = selected.v;
-        all.point_cloud_fallback = true;
-        settings.progress("[feature saving] " + selected.name + " against " + aogen::to_name(all));
-        const std::optional<feature_saving> f = detail::compare_twin(selected, run_variant(all, true), out.scenes);
-        if (f) out.savings.push_back(*f);
+
+    const auto compile_start = clock::now();
+    settings.progress("compiling " + std::to_string(out.variants.size() + out.twins.size()) + " variants (as shipped, for diagnostics" +
+                      (settings.fetch_floor ? ", fetch floors" : "") + ")");
+    aogen::vulkan::spirv_cache cache;
+    std::vector<aogen::codegen::shader_source> sources;
+    for (const variant_record& r : out.variants)
+        for (aogen::codegen::shader_source& s : detail::sources_of(r.v, true, settings.fetch_floor)) sources.push_back(std::move(s));
+    for (const variant_record& r : out.twins)
+        for (aogen::codegen::shader_source& s : detail::sources_of(r.v, true, false)) sources.push_back(std::move(s));
+    cache.compile_all(sources);
+    std::vector<detail::compiled_variant> compiled, compiled_twins;
+    for (variant_record& r : out.variants) {
+        detail::count_instructions(r, cache);
+        compiled.push_back(detail::compile_variant(ctx, r.v, settings.fetch_floor, cache));
     }
-    detail::mark_pareto(out.variants);
+    for (variant_record& r : out.twins) {
+        detail::count_instructions(r, cache);
+        compiled_twins.push_back(detail::compile_variant(ctx, r.v, false, cache));
+    }
+    out.phases.compile = detail::seconds_since(compile_start);
+
+    std::vector<double> all_clocks;
+    for (size_t si = 0; si < settings.scenes.size(); ++si) {
+        const std::string tag = "[scene " + std::to_string(si + 1) + "/" + std::to_string(settings.scenes.size()) + "] " + settings.scenes[si].name;
+        settings.progress(tag + ": G-buffer and reference (" + std::to_string(settings.grid * settings.grid) + " rays per pixel)");
+        const auto trace_start = clock::now();
+        aogen::truth::scene tracer;
+        settings.scenes[si].build(tracer);
+        out.scenes.push_back(prepare_scene(settings.scenes[si], tracer, settings));
+        const scene_record& scene = out.scenes.back();
+        detail::gbuffer_cache gbuffers(ctx, scene.scene, tracer);
+        out.phases.trace += detail::seconds_since(trace_start);
+
+        // Scoring: every record that can run, once, in its diagnostic build.
+        const auto score_start = clock::now();
+        settings.progress(tag + ": scoring " + std::to_string(out.variants.size() + out.twins.size()) + " variants");
+        std::vector<std::pair<variant_record*, const detail::compiled_variant*>> records;
+        for (size_t i = 0; i < out.variants.size(); ++i) records.push_back({&out.variants[i], &compiled[i]});
+        for (size_t i = 0; i < out.twins.size(); ++i) records.push_back({&out.twins[i], &compiled_twins[i]});
+        std::vector<run_record*> scored;
+        for (size_t k = 0; k < records.size(); ++k) {
+            variant_record& r = *records[k].first;
+            const std::string skipped = detail::why_not(r, scene, k >= out.variants.size());
+            r.runs.push_back(skipped.empty() ? detail::score(*records[k].second, gbuffers, scene) : run_record{skipped});
+            if (skipped.empty()) scored.push_back(&r.runs.back()), ++out.phases.runs;
+        }
+        detail::parallel_for(scored.size(), [&](size_t k) { detail::finish_scoring(*scored[k], scene); });
+        out.phases.score += detail::seconds_since(score_start);
+
+        // Timing: shipped chains, floors and twins bound in groups, each group interleaved.
+        const auto time_start = clock::now();
+        settings.progress(tag + ": timing (" + std::to_string(settings.timing.rounds) + " rounds × " + std::to_string(settings.timing.iterations) +
+                          " iterations per chain, " + aogen::format_number(settings.timing.warmup_ms) + " ms warm-up)");
+        std::vector<double> scene_clocks;
+        std::vector<detail::timed_chain> group;
+        size_t group_bytes = 0;
+        const auto flush = [&] {
+            if (group.empty()) return;
+            clocks.start();
+            detail::time_group(ctx, group, settings.timing);
+            for (double mhz : clocks.stop()) scene_clocks.push_back(mhz);
+            group.clear(), group_bytes = 0;
+        };
+        const auto add = [&](run_record& run, bool floor, const aogen::vulkan::pass_pipelines& passes, const aogen::variant& v) {
+            const aogen::vulkan::gpu_gbuffer& g = gbuffers.gpu(v);
+            const auto [tw, th] = aogen::vulkan::target_size(v, g.width(), g.height());
+            auto bound = std::make_unique<aogen::vulkan::bound_chain>(
+                ctx, passes, g, aogen::vulkan::inputs_for(v, default_settings(v, scene.scene), tw, th), tw, th);
+            group_bytes += detail::output_bytes(*bound);
+            group.push_back({&run, floor, std::move(bound)});
+        };
+        for (size_t i = 0; i < out.variants.size(); ++i) {
+            run_record& run = out.variants[i].runs.back();
+            if (!run.ran()) continue;
+            if (group_bytes > settings.bound_bytes) flush();
+            add(run, false, compiled[i].shipped->passes(), out.variants[i].v);
+            if (compiled[i].floor) add(run, true, *compiled[i].floor, out.variants[i].v);
+            for (size_t t = 0; t < out.twins.size(); ++t) // the twin right after its variant
+                if (twin_of[t] == int(i) && out.twins[t].runs.back().ran()) add(out.twins[t].runs.back(), false, compiled_twins[t].shipped->passes(), out.twins[t].v);
+        }
+        flush();
+        out.scenes.back().clocks = detail::clocks_of(scene_clocks);
+        all_clocks.insert(all_clocks.end(), scene_clocks.begin(), scene_clocks.end());
+        out.clocks = detail::clocks_of(all_clocks);
+        out.phases.time += detail::seconds_since(time_start);
+
+        detail::summarise_all(out, twin_of);
+        settings.scene_done(out);
+    }
     return out;
 }
 
