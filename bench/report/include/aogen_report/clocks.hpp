@@ -14,6 +14,7 @@
 //     clocks.start();
 //     ... time something ...
 //     std::vector<double> mhz = clocks.stop();      // empty when not available()
+//     clocks.timeline();                            // the same readings with their ms since start()
 //     clocks.max_mhz();                             // the GPU's maximum SM clock, 0 if unknown
 #pragma once
 
@@ -43,17 +44,24 @@ public:
     bool available() const { return available_; }
     double max_mhz() const { return max_mhz_; }
 
+    // One reading: milliseconds since start() (when nvidia-smi answered), SM MHz.
+    struct sample {
+        double ms = 0, mhz = 0;
+    };
+
     void start()
     {
         if (!available_ || running_) return;
         samples_.clear();
         running_ = true;
-        thread_ = std::thread([this] {
+        const auto started = std::chrono::steady_clock::now();
+        thread_ = std::thread([this, started] {
             while (running_) {
                 double sm = 0, max = 0;
                 if (read(sm, max)) {
+                    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
                     std::lock_guard<std::mutex> lock(mutex_);
-                    samples_.push_back(sm);
+                    samples_.push_back({ms, sm});
                 }
                 for (int waited = 0; running_ && waited < period_ms_; waited += 10) std::this_thread::sleep_for(std::chrono::milliseconds(10));
             }
@@ -66,6 +74,14 @@ public:
         if (!running_) return {};
         running_ = false;
         thread_.join();
+        std::vector<double> mhz;
+        for (const sample& s : timeline()) mhz.push_back(s.mhz);
+        return mhz;
+    }
+
+    // The readings of the last start()..stop(), in order.
+    std::vector<sample> timeline() const
+    {
         std::lock_guard<std::mutex> lock(mutex_);
         return samples_;
     }
@@ -106,7 +122,7 @@ private:
     std::atomic<bool> running_{false};
     std::thread thread_;
     mutable std::mutex mutex_;
-    std::vector<double> samples_;
+    std::vector<sample> samples_;
 };
 
 } // namespace aogen_report
