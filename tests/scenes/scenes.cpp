@@ -3,12 +3,13 @@
 
 namespace {
 
-// A plane z_view = −distance facing a camera at the origin that looks down −z.
-scene facing_plane(double distance, depth_convention d)
+// A plane z_view = −distance facing a camera at `eye` (the origin unless told) that looks
+// down −z.
+scene facing_plane(double distance, depth_convention d, dvec3 eye = {})
 {
     scene s;
-    s.planes = {{{0, 0, -distance}, {0, 0, 1}}};
-    s.camera.eye = {0, 0, 0}, s.camera.target = {0, 0, -1}, s.camera.up = {0, 1, 0};
+    s.planes = {{eye + dvec3{0, 0, -distance}, {0, 0, 1}}};
+    s.camera.eye = eye, s.camera.target = eye + dvec3{0, 0, -1}, s.camera.up = {0, 1, 0};
     s.camera.depth = d;
     s.camera.width = 32, s.camera.height = 18;
     return s;
@@ -21,9 +22,14 @@ const depth_convention all_conventions[] = {depth_convention::standard, depth_co
 
 TEST_CASE("depth of a facing plane equals the projection formula for each convention", "[scenes][gbuffer]")
 {
+    // At the world's zero, and 10⁷ from it, where float world coordinates are 1 apart: the
+    // tracer works relative to the camera's eye (make_tracer).
+    const double from_zero = GENERATE(0.0, 1e7);
+    const dvec3 eye = from_zero * truth::normalize({1, -std::sqrt(2.0), std::sqrt(3.0)});
+    INFO("camera " << from_zero << " from the world's zero");
     for (depth_convention d : all_conventions)
         for (double z : {0.5, 5.0, 37.25}) {
-            const scene s = facing_plane(z, d);
+            const scene s = facing_plane(z, d, eye);
             const gbuffer g = render_gbuffer(s);
             const float want = expected_depth(d, s.camera.near, s.camera.far, float(z));
             int64_t worst = 0;

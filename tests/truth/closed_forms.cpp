@@ -1,10 +1,14 @@
 // The reference tracer (bench/truth) against DESIGN.md's closed forms, to within 0.005,
-// with its reported standard error below 0.005 too.
+// with its reported standard error below 0.005 too. Each configuration is traced where it
+// was drawn, at the world's zero, and moved 10⁶ and 10⁷ away from it (geometry and query
+// points), by a tracer whose origin, a camera's eye, is a few units from the configuration:
+// what a scene far from the world's zero hands the tracer.
 #include <aogen_truth/tracer.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 using aogen::truth::estimate;
 using aogen::truth::options;
@@ -25,9 +29,34 @@ void check(const estimate& e, double expected)
     CHECK(e.standard_error < tolerance);
 }
 
+// A configuration drawn around the world's zero, placed `distance` from it along a direction
+// with irrational coordinates (so no placed coordinate is a round float), and traced by a
+// tracer at a camera's eye 5 units from the configuration's own zero.
+class placed {
+public:
+    explicit placed(double distance)
+        : shift_(distance * aogen::truth::normalize({1, -std::sqrt(2.0), std::sqrt(3.0)})),
+          tracer_(shift_ + vec3{2.3, -4.1, 1.7})
+    {
+    }
+    void add_plane(vec3 point, vec3 normal) { tracer_.add_plane(shift_ + point, normal); }
+    void add_quad(vec3 corner, vec3 e1, vec3 e2) { tracer_.add_quad(shift_ + corner, e1, e2); }
+    void add_box(vec3 lo, vec3 hi) { tracer_.add_box(shift_ + lo, shift_ + hi); }
+    void add_sphere(vec3 centre, double radius) { tracer_.add_sphere(shift_ + centre, radius); }
+    void commit() { tracer_.commit(); }
+    estimate ao(vec3 p, vec3 normal, const options& o = {}) const { return tracer_.ao(shift_ + p, normal, o); }
+
+private:
+    vec3 shift_;
+    scene tracer_;
+};
+
+// Where the closed forms are checked: as drawn, and moved 10⁶ and 10⁷ from the world's zero.
+const std::vector<double> distances_from_zero = {0, 1e6, 1e7};
+
 // Floor z = 0 and a wall rising from the line x = d at interior angle α (measured from the
 // floor on the point's side), both 10⁴ long: "infinite" for the point at the origin.
-void floor_and_wall(scene& s, double d, double alpha_degrees, double wall_length = 1e4)
+void floor_and_wall(placed& s, double d, double alpha_degrees, double wall_length = 1e4)
 {
     const double a = alpha_degrees * pi / 180;
     s.add_plane({0, 0, 0}, {0, 0, 1});
@@ -38,7 +67,9 @@ void floor_and_wall(scene& s, double d, double alpha_degrees, double wall_length
 
 TEST_CASE("truth: open plane sees everything", "[truth]")
 {
-    scene s;
+    const double distance = GENERATE(from_range(distances_from_zero));
+    INFO("configuration " << distance << " from the world's zero");
+    placed s(distance);
     s.add_plane({0, 0, 0}, {0, 0, 1});
     s.commit();
     const estimate e = s.ao({0.3, -0.2, 0}, {0, 0, 1});
@@ -48,9 +79,11 @@ TEST_CASE("truth: open plane sees everything", "[truth]")
 
 TEST_CASE("truth: floor point by an infinite wall, (1 - cos a)/2", "[truth]")
 {
+    const double distance = GENERATE(from_range(distances_from_zero));
+    INFO("configuration " << distance << " from the world's zero");
     for (double alpha : {60.0, 90.0, 120.0}) {
         for (double d : {0.25, 1.0}) {
-            scene s;
+            placed s(distance);
             floor_and_wall(s, d, alpha);
             s.commit();
             INFO("alpha " << alpha << " d " << d);
@@ -61,7 +94,9 @@ TEST_CASE("truth: floor point by an infinite wall, (1 - cos a)/2", "[truth]")
 
 TEST_CASE("truth: apex of a 90 degree groove, normal along the bisector", "[truth]")
 {
-    scene s;  // planes x = z and x = -z meeting on the y axis, opening towards +x
+    const double distance = GENERATE(from_range(distances_from_zero));
+    INFO("configuration " << distance << " from the world's zero");
+    placed s(distance);  // planes x = z and x = -z meeting on the y axis, opening towards +x
     s.add_quad({0, -1e4, 0}, {0, 2e4, 0}, 1e4 * vec3{1, 0, 1});
     s.add_quad({0, -1e4, 0}, {0, 2e4, 0}, 1e4 * vec3{1, 0, -1});
     s.commit();
@@ -70,15 +105,17 @@ TEST_CASE("truth: apex of a 90 degree groove, normal along the bisector", "[trut
 
 TEST_CASE("truth: floor point by a wall of height H, (1 + d/sqrt(d^2 + H^2))/2", "[truth]")
 {
+    const double distance = GENERATE(from_range(distances_from_zero));
+    INFO("configuration " << distance << " from the world's zero");
     for (double h : {1.0, 2.0}) {
-        scene s;
+        placed s(distance);
         floor_and_wall(s, 1.0, 90.0, h);
         s.commit();
         INFO("H " << h);
         check(s.ao({0, 0, 0}, {0, 0, 1}), 0.5 * (1 + 1 / std::sqrt(1 + h * h)));
     }
     SECTION("the same wall as a box") {
-        scene s;
+        placed s(distance);
         s.add_plane({0, 0, 0}, {0, 0, 1});
         s.add_box({1, -1e4, 0}, {1.5, 1e4, 1});
         s.commit();
@@ -88,8 +125,10 @@ TEST_CASE("truth: floor point by a wall of height H, (1 + d/sqrt(d^2 + H^2))/2",
 
 TEST_CASE("truth: floor point by a sphere resting on the floor, 1 - (r/sqrt(s^2 + r^2))^3", "[truth]")
 {
+    const double distance = GENERATE(from_range(distances_from_zero));
+    INFO("configuration " << distance << " from the world's zero");
     const double r = 0.5;
-    scene s;
+    placed s(distance);
     s.add_plane({0, 0, 0}, {0, 0, 1});
     s.add_sphere({0, 0, r}, r);
     s.commit();
@@ -104,8 +143,10 @@ TEST_CASE("truth: floor point by a sphere resting on the floor, 1 - (r/sqrt(s^2 
 
 TEST_CASE("truth: bounded radius R", "[truth]")
 {
+    const double distance = GENERATE(from_range(distances_from_zero));
+    INFO("configuration " << distance << " from the world's zero");
     SECTION("a wall farther than R does not occlude") {
-        scene s;
+        placed s(distance);
         floor_and_wall(s, 1.5, 90.0);
         s.commit();
         options o;
@@ -118,7 +159,7 @@ TEST_CASE("truth: bounded radius R", "[truth]")
     }
     SECTION("a parallel ceiling at height h < R: (h/R)^2") {
         // Occluded where h/cos θ < R, i.e. cos θ > h/R: (1/π)∫ cos θ dω there is 1 − (h/R)².
-        scene s;
+        placed s(distance);
         s.add_plane({0, 0, 0}, {0, 0, 1});
         s.add_plane({0, 0, 0.5}, {0, 0, -1});
         s.commit();
@@ -129,6 +170,48 @@ TEST_CASE("truth: bounded radius R", "[truth]")
             check(s.ao({0, 0, 0}, {0, 0, 1}, o), (0.5 / radius) * (0.5 / radius));
         }
     }
+}
+
+TEST_CASE("truth: options::epsilon lifts the point by exactly that: a wall of height H - epsilon", "[truth]")
+{
+    // Lifted by ε, the floor point sees the wall from ε up: below its horizon the wall is
+    // outside the hemisphere, so it is the closed form of a wall of height H − ε.
+    placed s(1e6);
+    floor_and_wall(s, 1.0, 90.0, 1.0);
+    s.commit();
+    options o;
+    o.epsilon = 0.5;
+    check(s.ao({0, 0, 0}, {0, 0, 1}, o), 0.5 * (1 + 1 / std::sqrt(1 + 0.5 * 0.5)));
+}
+
+TEST_CASE("truth: a hit seen from 5 km lies on the surface hit, to double precision", "[truth]")
+{
+    // Geometry whose float vertices are exact (a floor z = 0, a sphere of integer centre and
+    // radius), a tracer at the world's zero, rays from 5 km: Embree's float t alone puts
+    // these hits ~10⁻⁴ off the surface; the closed-form ray-plane and ray-sphere points are
+    // what intersect() must return.
+    scene s;
+    s.add_plane({0, 0, 0}, {0, 0, 1});
+    const vec3 centre{3, 2, 1};
+    s.add_sphere(centre, 1);
+    s.commit();
+    const vec3 eye{3000.3, -2999.6, 2800.1};
+    const auto distance = [](vec3 a, vec3 b) { return std::sqrt(aogen::truth::dot(a - b, a - b)); };
+    for (const vec3 target : {vec3{0.3, -0.7, 0}, vec3{-1.7, 0.9, 0}, vec3{0.01, 0.02, 0}}) {
+        INFO("floor point " << target.x << ", " << target.y);
+        const scene::hit h = s.intersect(eye, target - eye, 0, 2); // t = 1 at the target
+        REQUIRE(h.found);
+        CHECK(h.geometry == 0);
+        CHECK(std::abs(h.t - 1) < 1e-12);
+        CHECK(distance(h.position, target) < 1e-9);
+        CHECK(std::abs(aogen::truth::normalize(h.normal).z) == 1.0);
+    }
+    const vec3 towards_eye = aogen::truth::normalize(eye - centre);
+    const scene::hit h = s.intersect(eye, centre - eye, 0, 2); // straight at the centre
+    REQUIRE(h.found);
+    CHECK(h.geometry == 1);
+    CHECK(distance(h.position, centre + towards_eye) < 1e-9);
+    CHECK(aogen::truth::dot(aogen::truth::normalize(h.normal), towards_eye) > 1 - 1e-12);
 }
 
 TEST_CASE("truth: deterministic, and the seed changes only the noise", "[truth]")

@@ -1,9 +1,9 @@
 // aogen_report/reference.hpp — the ground-truth AO image of a scene: Embree-traced AO at
 // every pixel's surface point, with its Monte-Carlo standard error.
 //
-//     aogen::truth::scene t;  s.build(t);
-//     aogen::scenes::gbuffer g = render_gbuffer(s, t, world_normals);
-//     aogen_report::reference r = aogen_report::trace_reference(t, g, s.ao_radius, 64);
+//     const auto t = aogen::scenes::make_tracer(s);   // camera-relative: origin at the eye
+//     aogen::scenes::gbuffer g = render_gbuffer(s, *t, world_normals);
+//     aogen_report::reference r = aogen_report::trace_reference(*t, g, s.ao_radius, 64);
 //     r.ao[i], r.standard_error[i], r.valid[i];   r.noise_rms;
 //
 // AO(p) = (1/π)∫ V_R(p, ω) cos θ dω over the hemisphere of the pixel's world-space

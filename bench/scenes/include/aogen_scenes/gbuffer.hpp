@@ -25,7 +25,11 @@
 //     towards the ray), w = 1 on geometry; (0, 0, 0, 0) on background. World space by
 //     default, view space with normal_space::view; empty with normal_space::none.
 //   * position: world-space hit, xyz doubles per pixel (NaN on background); hit: 1/0;
-//     geometry: the hit's geometry id (scene::build order), or −1.
+//     geometry: the hit's geometry id (scene::build order), or −1. The hit's t, position and
+//     normal are truth::scene::intersect's, recomputed in double on the primitive hit: Embree's
+//     float t puts a point seen from t away up to ~2⁻²³·t off its surface (8·10⁻⁵ from 5 km),
+//     which the reference's ray offset would otherwise have to grow with t to clear; the
+//     refined point lies on the surface its rays start from.
 #pragma once
 
 #include "scene.hpp"
@@ -71,7 +75,7 @@ struct gbuffer_options {
     normal_space normals = normal_space::world;    // used when use_scene_normals is false
 };
 
-// Ray-casts the G-buffer of `s` into an already built tracer scene `t` (scene::build).
+// Ray-casts the G-buffer of `s` into an already built tracer `t` (make_tracer(s)).
 inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuffer_options& o = {})
 {
     const camera& c = s.camera;
@@ -114,8 +118,7 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
             const dvec3 v = org_v + h.t * dir_v; // view-space hit, z = −t
             const vec4 clip = proj * vec4{float(v.x), float(v.y), float(v.z), 1.0f};
             g.depth[i] = stored_depth(clip.z / clip.w, s.renderer.depth_buffer);
-            const dvec3 p = org + h.t * dir;
-            g.position[3 * i] = p.x, g.position[3 * i + 1] = p.y, g.position[3 * i + 2] = p.z;
+            g.position[3 * i] = h.position.x, g.position[3 * i + 1] = h.position.y, g.position[3 * i + 2] = h.position.z;
             g.hit[i] = 1;
             g.geometry[i] = int(h.geometry);
             if (g.normals_space != normal_space::none) {
@@ -131,12 +134,10 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
     return g;
 }
 
-// Builds the tracer scene and ray-casts the G-buffer.
+// Builds the scene's tracer and ray-casts the G-buffer.
 inline gbuffer render_gbuffer(const scene& s, const gbuffer_options& o = {})
 {
-    truth::scene t;
-    s.build(t);
-    return render_gbuffer(s, t, o);
+    return render_gbuffer(s, *make_tracer(s), o);
 }
 
 } // namespace aogen::scenes

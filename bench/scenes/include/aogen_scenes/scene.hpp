@@ -6,6 +6,11 @@
 //                                meshes (mesh.hpp) and point clouds drawn as splats
 //                                (points.hpp) in world space, a camera, the AO radius R and
 //                                the renderer's inputs.
+//   make_tracer(scene)           the scene's tracer (truth::scene), built: its origin is the
+//                                camera's eye, so Embree's float coordinates are camera-relative
+//                                (aogen_truth/tracer.hpp, HOW) and stay precise however far the
+//                                scene is from the world's zero. Make every tracer for a scene
+//                                here.
 //   scene::build(tracer)         adds everything to a truth::scene; geometry ids in the order
 //                                planes, boxes, spheres, quads, meshes, point sets. Splats face
 //                                the camera of that moment: build again after moving it.
@@ -66,6 +71,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -165,6 +171,16 @@ struct scene {
                  point_sets.empty());
     }
 };
+
+// The tracer for `s`, built and committed, with its origin at the camera's eye: the points
+// the G-buffer finds and the reference traces from are within the camera's distances of it.
+// A unique_ptr because a tracer owns Embree handles and cannot move.
+inline std::unique_ptr<truth::scene> make_tracer(const scene& s)
+{
+    auto tracer = std::make_unique<truth::scene>(s.camera.eye);
+    s.build(*tracer);
+    return tracer;
+}
 
 // --- validation --------------------------------------------------------------------
 
