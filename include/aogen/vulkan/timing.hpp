@@ -17,6 +17,11 @@
 //   Per chain: per pass and for the whole chain the median, 10th and 90th percentile
 //   (nearest rank) over all rounds × iterations, each iteration's total, and each round's
 //   median (round_ms: a drift across rounds means the clock was not settled).
+//   A second source for the timestamps themselves: rounds_gpu_ms is the span from each
+//   round's first timestamp to its last, rounds_wall_ms the host's wall clock from submit
+//   to fence, summed over the rounds. A GPU kept busy back to back has a span just under
+//   the wall time; timestamps that run slow or fast (a driver quirk, a wrong period) or
+//   a GPU that idles inside a round show as a ratio far from 1.
 //   Never touches the device's clock or power settings: it only keeps the GPU busy.
 //   Devices whose queue has no timestamps give empty results.
 //
@@ -88,6 +93,8 @@ struct timing_result {
     std::vector<chain_times> chains; // in the order given; empty without timestamps
     double warmup_ms = 0;            // warm-up actually run (wall clock)
     int warmup_submissions = 0;
+    double rounds_gpu_ms = 0;        // Σ over rounds of last − first timestamp
+    double rounds_wall_ms = 0;       // Σ over rounds of submit-to-fence wall clock
 };
 
 namespace detail {
@@ -128,6 +135,13 @@ inline void submit_and_wait(context& ctx, VkCommandBuffer cb, VkFence fence)
     check(vkQueueSubmit(ctx.queue(), 1, &si, fence), "vkQueueSubmit");
     check(vkWaitForFences(ctx.device(), 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
     check(vkResetFences(ctx.device(), 1, &fence), "vkResetFences");
+}
+
+// `ticks` timestamp ticks in ms (masked to the queue's valid bits).
+inline double ticks_ms(const context& ctx, uint64_t ticks)
+{
+    const uint64_t mask = ctx.timestamp_valid_bits() >= 64 ? ~0ull : (1ull << ctx.timestamp_valid_bits()) - 1;
+    return double(ticks & mask) * ctx.timestamp_period_ns() * 1e-6;
 }
 
 inline double elapsed_ms(std::chrono::steady_clock::time_point since)
@@ -195,8 +209,11 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
         vkCmdResetQueryPool(cb, pool, 0, queries);
         for (int k = 0; k < o.iterations; ++k)
             for (size_t c = 0; c < chains.size(); ++c) chains[c]->record(cb, {pool, first[c] + static_cast<uint32_t>(k) * per_iteration});
+        const auto submitted = std::chrono::steady_clock::now();
         detail::submit_and_wait(ctx, cb, fence);
+        out.rounds_wall_ms += detail::elapsed_ms(submitted);
         const std::vector<uint64_t> ticks = read_queries(ctx, pool, queries);
+        out.rounds_gpu_ms += detail::ticks_ms(ctx, ticks.back() - ticks.front());
         for (size_t c = 0; c < chains.size(); ++c) {
             std::vector<double> totals;
             for (int k = 0; k < o.iterations; ++k) {

@@ -84,6 +84,13 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
        << " back-to-back iterations of every chain, interleaved" << (d.fetch_floor ? " with their fetch floors" : "")
        << "; GPU timestamps around every pass; median and p10–p90 of the iterations\n";
     md << "- SM clock while timing: " << detail::clocks_text(d.clocks) << "\n";
+    double gpu = 0, wall = 0;
+    for (const scene_record& s : d.scenes) gpu += s.timed_gpu_ms, wall += s.timed_wall_ms;
+    if (wall > 0)
+        md << "- Timestamps against the host's clock: the timing rounds' timestamps span " << fixed(gpu, 1) << " ms of " << fixed(wall, 1)
+           << " ms wall clock (" << fixed(100.0 * gpu / wall, 1) << " %)"
+           << (gpu / wall > 0.8 && gpu / wall < 1.02 ? ": the GPU was kept busy, and its timestamps keep time\n"
+                                                     : ": far from 100 %, so either the GPU idled inside the rounds or its timestamps do not keep time — read the times with care\n");
     md << "- Command: `" << meta.command << "`\n\n";
     md << "**How to read it.** Error is the RMSE of the variant's AO against the ray-traced reference over the pixels that show "
           "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution AO is compared after "

@@ -9,7 +9,8 @@
 //     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
 //     "phases_s": {compile, trace, score, time, runs},
 //     "calibration": "...",
-//     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud, clocks}],
+//     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
+//                   timed_gpu_ms, timed_wall_ms}],   // the timing rounds: timestamp span against host wall clock
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
 //                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, rmse, rmse_calibrated,
 //                   raw: {measured, nan, inf, below_zero, above_one}, pareto, pareto_calibrated,
@@ -128,7 +129,9 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                {"truth_mean", s.truth_mean},
                                {"truth_noise_rms", s.truth.noise_rms},
                                {"point_cloud", s.scene.renderer.point_cloud},
-                               {"clocks", detail::clocks_json(s.clocks)}});
+                               {"clocks", detail::clocks_json(s.clocks)},
+                               {"timed_gpu_ms", s.timed_gpu_ms},
+                               {"timed_wall_ms", s.timed_wall_ms}});
     j["variants"] = nlohmann::json::array();
     for (const variant_record& v : d.variants) j["variants"].push_back(detail::variant_json(v, d.scenes));
     j["feature_saving"] = nlohmann::json::array();

@@ -97,6 +97,7 @@ struct scene_record {
     size_t valid_pixels = 0;
     double truth_mean = 0;           // mean reference AO over valid pixels
     clock_record clocks;             // SM clock while this scene was timed (nvidia-smi)
+    double timed_gpu_ms = 0, timed_wall_ms = 0; // the timing rounds: timestamp span, host wall clock
     bool mesh_only() const { return !scene.renderer.point_cloud; }
 };
 
@@ -346,13 +347,15 @@ struct timed_chain {
 
 inline size_t output_bytes(const aogen::vulkan::bound_chain& b) { return b.passes().size() * size_t(b.width()) * b.height(); }
 
-// Times `chains` together (interleaved) and stores each one's times in its run record.
-inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& chains, const aogen::vulkan::timing_options& o)
+// Times `chains` together (interleaved) and stores each one's times in its run record;
+// the rounds' timestamp span and wall clock are added to the scene's.
+inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& chains, const aogen::vulkan::timing_options& o, scene_record& scene)
 {
     std::vector<const aogen::vulkan::bound_chain*> bound;
     for (const timed_chain& c : chains) bound.push_back(c.bound.get());
     const aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, bound, o);
     if (t.chains.empty()) return; // no timestamps
+    scene.timed_gpu_ms += t.rounds_gpu_ms, scene.timed_wall_ms += t.rounds_wall_ms;
     for (size_t i = 0; i < chains.size(); ++i) {
         run_record& r = *chains[i].run;
         if (chains[i].floor) {
@@ -529,11 +532,10 @@ inline report_data run_report(const report_settings& settings)
         const std::string tag = "[scene " + std::to_string(si + 1) + "/" + std::to_string(settings.scenes.size()) + "] " + settings.scenes[si].name;
         settings.progress(tag + ": G-buffer and reference (" + std::to_string(settings.grid * settings.grid) + " rays per pixel)");
         const auto trace_start = clock::now();
-        aogen::truth::scene tracer;
-        settings.scenes[si].build(tracer);
-        out.scenes.push_back(prepare_scene(settings.scenes[si], tracer, settings));
+        const std::unique_ptr<aogen::truth::scene> tracer = aogen::scenes::make_tracer(settings.scenes[si]); // camera-relative
+        out.scenes.push_back(prepare_scene(settings.scenes[si], *tracer, settings));
         const scene_record& scene = out.scenes.back();
-        detail::gbuffer_cache gbuffers(ctx, scene.scene, tracer);
+        detail::gbuffer_cache gbuffers(ctx, scene.scene, *tracer);
         out.phases.trace += detail::seconds_since(trace_start);
 
         // Scoring: every record that can run, once, in its diagnostic build.
@@ -562,7 +564,7 @@ inline report_data run_report(const report_settings& settings)
         const auto flush = [&] {
             if (group.empty()) return;
             clocks.start();
-            detail::time_group(ctx, group, settings.timing);
+            detail::time_group(ctx, group, settings.timing, out.scenes.back());
             for (double mhz : clocks.stop()) scene_clocks.push_back(mhz);
             group.clear(), group_bytes = 0;
         };
