@@ -1,7 +1,7 @@
 // aogen_report — how far each AO variant is from the ray-traced truth, and what it costs.
 //
 //     aogen_report [--scenes crease,room,my_scene.json] [--variants spec.json | NAME,NAME]
-//                  [--size 320x180] [--rays 4096] [--rounds 5] [--iterations 4] [--warmup-ms 200]
+//                  [--size 320x180] [--rays 4096] [--rounds 3] [--iterations 20] [--budget-ms 1000] [--warmup-ms 200]
 //                  [--device NAME] [--out out/report]
 //
 // Writes into --out: report.md (the tables), results.json (every number),
@@ -157,8 +157,10 @@ int main(int argc, char** argv)
     app.add_option("--rays", rays, "reference rays per pixel: the square of an even number >= 32")->capture_default_str();
     app.add_option("--rounds", timing.rounds, "timing rounds per scene: every chain's iterations, interleaved, in one submission")
         ->capture_default_str()->check(CLI::Range(1, 1000));
-    app.add_option("--iterations", timing.iterations, "back-to-back iterations of every chain in each round")
+    app.add_option("--iterations", timing.iterations, "back-to-back iterations of every chain in each round (the most, under --budget-ms)")
         ->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--budget-ms", timing.budget_ms, "fewer iterations where a scene's rounds would take longer than this (0: always --iterations)")
+        ->capture_default_str()->check(CLI::Range(0.0, 3600000.0));
     app.add_option("--warmup-ms", timing.warmup_ms, "continuous untimed GPU work before each scene's timing, in ms")
         ->capture_default_str()->check(CLI::Range(0.0, 60000.0));
     app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");

@@ -47,7 +47,8 @@ def errors(r):  # everything but the times
 assert errors(a) == errors(b), "errors differ between two runs"
 assert [s["truth_noise_rms"] for s in a["scenes"]] == [s["truth_noise_rms"] for s in b["scenes"]]
 assert a["rays_per_pixel"] == 1024 and len(a["scenes"]) == 3 and len(a["variants"]) == 3 and a["complete"] is True
-assert a["timing"] == {"rounds": 2, "iterations": 1, "warmup_ms": 0, "fetch_floor": True}, a["timing"]
+assert a["timing"] == {"rounds": 2, "iterations": 1, "warmup_ms": 0, "budget_ms": 1000, "fetch_floor": True}, a["timing"]
+assert all(s["iterations"] == 1 for s in a["scenes"])
 ran = [s for v in a["variants"] for s in v["scenes"] if "skipped" not in s]
 assert len(ran) == 9, len(ran)
 smallest = min(s["default"]["rmse"] for s in ran)

@@ -121,6 +121,19 @@ TEST_CASE("vulkan: a chain bound once runs again and again with the same result,
             CHECK(ct.total.median <= ct.total.p90);
         }
     }
+    CHECK(t.iterations == 4);
+    // A budget smaller than one iteration of both chains leaves one per round (never zero);
+    // a generous one leaves the iterations asked for.
+    vulkan::timing_options tight = o;
+    tight.warmup_ms = 0;
+    tight.budget_ms = 1e-6;
+    if (ctx->timestamp_valid_bits() > 0) {
+        const vulkan::timing_result one = vulkan::time_chains(*ctx, {ba.get(), bb.get()}, tight);
+        CHECK(one.iterations == 1);
+        CHECK(one.chains[0].total_ms.size() == 3u);
+        tight.budget_ms = 1e9;
+        CHECK(vulkan::time_chains(*ctx, {ba.get()}, tight).iterations == 4);
+    }
     // Dispatched 3 × 4 + warm-up times since, interleaved with another chain: same AO.
     CHECK(ba->run_once(1.0f).ao == first.ao);
     CHECK(bb->run_once(0.0f).ao == b.run(host, settings_for(proj)).ao);

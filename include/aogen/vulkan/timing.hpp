@@ -8,12 +8,16 @@
 //        idles at 345 MHz and works at 1980: a chain timed from idle reads several times
 //        slow). Each submission is made longer (up to ~1/4 of the warm-up) until the GPU
 //        spends far more time working than waiting for the next submission.
-//     2. rounds: options.rounds command buffers, each holding options.iterations
-//        iterations of every chain, interleaved — A B C A B C ... — with a timestamp before
+//     2. rounds: options.rounds command buffers, each holding `iterations` iterations of
+//        every chain, interleaved — A B C A B C ... — with a timestamp before
 //        the first pass and after every pass of every iteration (bound_chain::record). So
 //        chains that are compared are timed in the same state of the clock, a clock still
 //        ramping favours none of them, and there are no gaps between iterations for it to
-//        drop in.
+//        drop in. `iterations` is options.iterations, or, with options.budget_ms > 0, as
+//        many (at least 1, at most options.iterations) as fit the budget: the warm-up's
+//        last submission says what one iteration of every chain costs. So one setting
+//        serves a GPU, where 20 iterations of a hundred chains take milliseconds, and a
+//        CPU device, where one takes half a second.
 //   Per chain: per pass and for the whole chain the median, 10th and 90th percentile
 //   (nearest rank) over all rounds × iterations, each iteration's total, and each round's
 //   median (round_ms: a drift across rounds means the clock was not settled).
@@ -27,7 +31,7 @@
 //
 // USAGE
 //     std::unique_ptr<aogen::vulkan::bound_chain> a = chain_a.bind(g, s), b = chain_b.bind(g, s);
-//     aogen::vulkan::timing_options o;                  // 5 rounds × 20 iterations, 200 ms warm-up
+//     aogen::vulkan::timing_options o;                  // 5 rounds × 20 iterations, 200 ms warm-up, no budget
 //     aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, {a.get(), b.get()}, o);
 //     t.chains[0].total.median;                         // ms
 //     t.chains[1].passes[0].p90;                        // ms, the AO pass of chain b
@@ -49,8 +53,9 @@ namespace aogen::vulkan {
 
 struct timing_options {
     int rounds = 5;          // command buffers of timed iterations
-    int iterations = 20;     // iterations of every chain in each round, interleaved
+    int iterations = 20;     // iterations of every chain in each round, interleaved (the most, with a budget)
     double warmup_ms = 200;  // continuous untimed GPU work first (wall clock)
+    double budget_ms = 0;    // > 0: fewer iterations where rounds × iterations would take longer
 };
 
 // A distribution of times, in milliseconds: median, 10th and 90th percentiles.
@@ -93,6 +98,7 @@ struct timing_result {
     std::vector<chain_times> chains; // in the order given; empty without timestamps
     double warmup_ms = 0;            // warm-up actually run (wall clock)
     int warmup_submissions = 0;
+    int iterations = 0;              // per round, as run (options.iterations, or fewer under a budget)
     double rounds_gpu_ms = 0;        // Σ over rounds of last − first timestamp
     double rounds_wall_ms = 0;       // Σ over rounds of submit-to-fence wall clock
 };
@@ -149,24 +155,43 @@ inline double elapsed_ms(std::chrono::steady_clock::time_point since)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
-// Keeps the GPU busy with `chains` for `ms` of wall-clock time.
-inline void warm_up(context& ctx, const std::vector<const bound_chain*>& chains, double ms, VkCommandBuffer cb, VkFence fence,
-                    timing_result& out)
+// Records `repeats` untimed iterations of every chain, submits and waits: the wall-clock ms.
+inline double run_untimed(context& ctx, const std::vector<const bound_chain*>& chains, int repeats, VkCommandBuffer cb, VkFence fence)
+{
+    const auto submitted = std::chrono::steady_clock::now();
+    begin(cb);
+    for (int k = 0; k < repeats; ++k)
+        for (const bound_chain* c : chains) c->record(cb);
+    submit_and_wait(ctx, cb, fence);
+    return elapsed_ms(submitted);
+}
+
+// Keeps the GPU busy with `chains` for `ms` of wall-clock time; returns the wall-clock ms
+// one iteration of every chain took in the last submission (0 when `ms` allowed none).
+inline double warm_up(context& ctx, const std::vector<const bound_chain*>& chains, double ms, VkCommandBuffer cb, VkFence fence,
+                      timing_result& out)
 {
     const auto start = std::chrono::steady_clock::now();
     int repeats = 1; // iterations of every chain per submission
+    double per_iteration = 0;
     while (elapsed_ms(start) < ms) {
-        const auto submitted = std::chrono::steady_clock::now();
-        begin(cb);
-        for (int k = 0; k < repeats; ++k)
-            for (const bound_chain* c : chains) c->record(cb);
-        submit_and_wait(ctx, cb, fence);
+        const double took = run_untimed(ctx, chains, repeats, cb, fence);
         ++out.warmup_submissions;
+        per_iteration = took / repeats;
         // Longer submissions until one fills a quarter of the warm-up: the host's turnaround
         // between them is then a small fraction of the GPU's working time.
-        if (elapsed_ms(submitted) < ms / 4 && repeats < (1 << 16)) repeats *= 2;
+        if (took < ms / 4 && repeats < (1 << 16)) repeats *= 2;
     }
     out.warmup_ms = elapsed_ms(start);
+    return per_iteration;
+}
+
+// Iterations per round: o.iterations, or as many as fit o.budget_ms (at least 1).
+inline int iterations_for(const timing_options& o, double per_iteration_ms)
+{
+    if (!(o.budget_ms > 0) || !(per_iteration_ms > 0)) return o.iterations;
+    const double fit = o.budget_ms / (o.rounds * per_iteration_ms);
+    return fit >= o.iterations ? o.iterations : std::max(1, int(fit));
 }
 
 } // namespace detail
@@ -176,6 +201,7 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
     require_range("vulkan timing rounds", o.rounds, 1, 100000);
     require_range("vulkan timing iterations", o.iterations, 1, 100000);
     if (!(o.warmup_ms >= 0)) fail("vulkan timing warmup_ms", format_number(o.warmup_ms) + " is out of range", "valid: >= 0");
+    if (!(o.budget_ms >= 0)) fail("vulkan timing budget_ms", format_number(o.budget_ms) + " is out of range", "valid: >= 0 (0: no budget)");
     if (chains.empty()) fail("vulkan timing", "no chains", "valid: at least one bound chain");
     timing_result out;
     if (ctx.timestamp_valid_bits() == 0) return out;
@@ -187,11 +213,15 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
     check(vkCreateFence(ctx.device(), &fci, nullptr, &fence), "vkCreateFence");
     sc.own(fence, vkDestroyFence);
 
+    double per_iteration_ms = detail::warm_up(ctx, chains, o.warmup_ms, cb, fence, out);
+    if (o.budget_ms > 0 && per_iteration_ms == 0) per_iteration_ms = detail::run_untimed(ctx, chains, 1, cb, fence); // to size the rounds
+    out.iterations = detail::iterations_for(o, per_iteration_ms);
+
     // Query slots of one round: iteration k of chain c starts at first[c] + k * per_iteration.
     std::vector<uint32_t> first(chains.size());
     uint32_t per_iteration = 0;
     for (size_t c = 0; c < chains.size(); ++c) first[c] = per_iteration, per_iteration += chains[c]->queries();
-    const uint32_t queries = per_iteration * static_cast<uint32_t>(o.iterations);
+    const uint32_t queries = per_iteration * static_cast<uint32_t>(out.iterations);
     VkQueryPoolCreateInfo qpi{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     qpi.queryType = VK_QUERY_TYPE_TIMESTAMP;
     qpi.queryCount = queries;
@@ -199,15 +229,13 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
     check(vkCreateQueryPool(ctx.device(), &qpi, nullptr, &pool), "vkCreateQueryPool");
     sc.own(pool, vkDestroyQueryPool);
 
-    detail::warm_up(ctx, chains, o.warmup_ms, cb, fence, out);
-
     std::vector<std::vector<std::vector<double>>> per_pass(chains.size()); // [chain][pass][sample]
     out.chains.resize(chains.size());
     for (size_t c = 0; c < chains.size(); ++c) per_pass[c].resize(chains[c]->passes().size());
     for (int round = 0; round < o.rounds; ++round) {
         detail::begin(cb);
         vkCmdResetQueryPool(cb, pool, 0, queries);
-        for (int k = 0; k < o.iterations; ++k)
+        for (int k = 0; k < out.iterations; ++k)
             for (size_t c = 0; c < chains.size(); ++c) chains[c]->record(cb, {pool, first[c] + static_cast<uint32_t>(k) * per_iteration});
         const auto submitted = std::chrono::steady_clock::now();
         detail::submit_and_wait(ctx, cb, fence);
@@ -216,7 +244,7 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
         out.rounds_gpu_ms += detail::ticks_ms(ctx, ticks.back() - ticks.front());
         for (size_t c = 0; c < chains.size(); ++c) {
             std::vector<double> totals;
-            for (int k = 0; k < o.iterations; ++k) {
+            for (int k = 0; k < out.iterations; ++k) {
                 const std::vector<double> ms = chains[c]->pass_ms(ticks, first[c] + static_cast<size_t>(k) * per_iteration);
                 double total = 0;
                 for (size_t p = 0; p < ms.size(); ++p) per_pass[c][p].push_back(ms[p]), total += ms[p];

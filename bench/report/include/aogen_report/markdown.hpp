@@ -79,9 +79,13 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     md << "\n- " << d.scenes.size() << " scenes at " << first.scene.camera.width << "×" << first.scene.camera.height << ", " << d.variants.size()
        << " variants\n";
     md << "- Reference: Embree, " << d.grid * d.grid << " stratified cosine-distributed rays per pixel\n";
+    int fewest = d.timing.iterations, most = 0;
+    for (const scene_record& s : d.scenes) fewest = std::min(fewest, s.iterations), most = std::max(most, s.iterations);
     md << "- Times: per scene, every chain bound once (device-local memory), " << fixed(d.timing.warmup_ms, 0)
-       << " ms of continuous GPU work first, then " << d.timing.rounds << " rounds of " << d.timing.iterations
+       << " ms of continuous GPU work first, then " << d.timing.rounds << " rounds of "
+       << (fewest == most ? std::to_string(most) : std::to_string(fewest) + "–" + std::to_string(most))
        << " back-to-back iterations of every chain, interleaved" << (d.fetch_floor ? " with their fetch floors" : "")
+       << (d.timing.budget_ms > 0 ? " (at most " + std::to_string(d.timing.iterations) + ", as many as fit " + fixed(d.timing.budget_ms, 0) + " ms)" : "")
        << "; GPU timestamps around every pass; median and p10–p90 of the iterations\n";
     md << "- SM clock while timing: " << detail::clocks_text(d.clocks) << "\n";
     double gpu = 0, wall = 0;

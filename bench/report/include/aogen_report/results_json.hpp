@@ -5,12 +5,13 @@
 // Layout (numbers as measured; times NaN — no timestamps, not timed — are null; "ms" is
 // always a median, "_p10"/"_p90" the nearest-rank percentiles of the same samples):
 //   { "aogen_report": 2, "device", "command", "rays_per_pixel", "complete": bool,
-//     "timing": {rounds, iterations, warmup_ms, fetch_floor},
+//     "timing": {rounds, iterations, warmup_ms, budget_ms, fetch_floor},   // iterations: the most per round
 //     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
 //     "phases_s": {compile, trace, score, time, runs},
 //     "calibration": "...",
 //     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
-//                   timed_gpu_ms, timed_wall_ms}],   // the timing rounds: timestamp span against host wall clock
+//                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
+//                   iterations}],                    // per round, as the budget allowed
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
 //                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, rmse, rmse_calibrated,
 //                   raw: {measured, nan, inf, below_zero, above_one}, pareto, pareto_calibrated,
@@ -114,7 +115,8 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
     j["command"] = meta.command;
     j["complete"] = meta.complete;
     j["rays_per_pixel"] = d.grid * d.grid;
-    j["timing"] = {{"rounds", d.timing.rounds}, {"iterations", d.timing.iterations}, {"warmup_ms", d.timing.warmup_ms}, {"fetch_floor", d.fetch_floor}};
+    j["timing"] = {{"rounds", d.timing.rounds}, {"iterations", d.timing.iterations}, {"warmup_ms", d.timing.warmup_ms},
+                   {"budget_ms", d.timing.budget_ms}, {"fetch_floor", d.fetch_floor}};
     j["clocks"] = detail::clocks_json(d.clocks);
     j["clocks"]["max_sm_mhz"] = detail::number(d.max_sm_mhz > 0 ? d.max_sm_mhz : std::nan(""));
     j["phases_s"] = {{"compile", d.phases.compile}, {"trace", d.phases.trace}, {"score", d.phases.score}, {"time", d.phases.time}, {"runs", d.phases.runs}};
@@ -131,7 +133,8 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                {"point_cloud", s.scene.renderer.point_cloud},
                                {"clocks", detail::clocks_json(s.clocks)},
                                {"timed_gpu_ms", s.timed_gpu_ms},
-                               {"timed_wall_ms", s.timed_wall_ms}});
+                               {"timed_wall_ms", s.timed_wall_ms},
+                               {"iterations", s.iterations}});
     j["variants"] = nlohmann::json::array();
     for (const variant_record& v : d.variants) j["variants"].push_back(detail::variant_json(v, d.scenes));
     j["feature_saving"] = nlohmann::json::array();

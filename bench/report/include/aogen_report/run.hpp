@@ -76,7 +76,9 @@ struct report_settings {
     std::vector<aogen::variant> variants;
     int width = 0, height = 0;       // every scene's resolution; 0: each scene's own
     int grid = 64;                   // reference rays per pixel: grid × grid
-    aogen::vulkan::timing_options timing{5, 4, 200.0}; // rounds × iterations per chain and scene, warm-up ms
+    // Per scene: 3 rounds of up to 20 iterations of every chain, as many as fit ~1 s of GPU
+    // work (a GPU runs 20, lavapipe 1), after a 200 ms warm-up.
+    aogen::vulkan::timing_options timing{3, 20, 200.0, 1000.0};
     bool fetch_floor = true;         // time each variant's fetch floor beside it
     bool feature_saving = true;      // run the point-cloud twins of SSAO variants
     size_t bound_bytes = size_t(2) << 30; // output images bound at once for timing, at most
@@ -98,6 +100,7 @@ struct scene_record {
     double truth_mean = 0;           // mean reference AO over valid pixels
     clock_record clocks;             // SM clock while this scene was timed (nvidia-smi)
     double timed_gpu_ms = 0, timed_wall_ms = 0; // the timing rounds: timestamp span, host wall clock
+    int iterations = 0;              // per round, as run (the budget's choice)
     bool mesh_only() const { return !scene.renderer.point_cloud; }
 };
 
@@ -356,6 +359,7 @@ inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& ch
     const aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, bound, o);
     if (t.chains.empty()) return; // no timestamps
     scene.timed_gpu_ms += t.rounds_gpu_ms, scene.timed_wall_ms += t.rounds_wall_ms;
+    scene.iterations = scene.iterations == 0 ? t.iterations : std::min(scene.iterations, t.iterations);
     for (size_t i = 0; i < chains.size(); ++i) {
         run_record& r = *chains[i].run;
         if (chains[i].floor) {
@@ -556,7 +560,7 @@ inline report_data run_report(const report_settings& settings)
 
         // Timing: shipped chains, floors and twins bound in groups, each group interleaved.
         const auto time_start = clock::now();
-        settings.progress(tag + ": timing (" + std::to_string(settings.timing.rounds) + " rounds × " + std::to_string(settings.timing.iterations) +
+        settings.progress(tag + ": timing (" + std::to_string(settings.timing.rounds) + " rounds of up to " + std::to_string(settings.timing.iterations) +
                           " iterations per chain, " + aogen::format_number(settings.timing.warmup_ms) + " ms warm-up)");
         std::vector<double> scene_clocks;
         std::vector<detail::timed_chain> group;
