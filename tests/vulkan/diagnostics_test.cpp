@@ -86,6 +86,7 @@ TEST_CASE("vulkan: a diagnostic chain gives the shipped AO and clean raw counts 
                 CHECK(r.nan == 0);
                 CHECK(r.inf == 0);
                 CHECK(r.out_of_range() == 0);
+                CHECK(r.max_excess == 0.0f);
             }
         }
     }
@@ -110,6 +111,7 @@ TEST_CASE("vulkan: a NaN strength shows in the AO pass's raw count, never in the
     CHECK(r.raw[0].nan > geometry / 2);
     CHECK(r.raw[0].nan <= geometry);
     CHECK(r.raw[0].inf == 0);
+    CHECK(r.raw[0].max_excess == 0.0f); // NaN is not out of range: it is counted as NaN only
     for (float a : r.ao) {
         REQUIRE(std::isfinite(a));
         REQUIRE(a >= 0.0f);
@@ -129,6 +131,9 @@ TEST_CASE("vulkan: a negative strength shows as raw values above 1 in the AO pas
     const vulkan::chain_result r = run_with_strength(*ctx, v, c, -1.0f);
     REQUIRE(r.raw.size() == 2);
     CHECK(r.raw[0].above_one > 0);   // occluded pixels: visibility < 1, so 1 / visibility > 1
+    // The crease's corner is well occluded: 1 / visibility lies far above 1 there.
+    CHECK(r.raw[0].max_excess > 0.1f);
+    CHECK(std::isfinite(r.raw[0].max_excess));
     CHECK(r.raw[0].non_finite() == 0);
     CHECK(r.raw[0].below_zero == 0);
     // The box blur reads the guarded output: its own values stay in range.

@@ -145,7 +145,8 @@ public:
         for (size_t i = 0; i < passes_.size(); ++i) out.passes.push_back(names::name_of(pass_kind_names, passes_[i].kind, "pass"));
         if (pool) out.pass_ms = pass_ms(read_queries(ctx_, pool, queries()), 0);
         if (has_raw_)
-            for (size_t i = 0; i < passes_.size(); ++i) out.raw.push_back(raw_counter::decode(static_cast<const uint32_t*>(counts.mapped) + 4 * i));
+            for (size_t i = 0; i < passes_.size(); ++i)
+                out.raw.push_back(raw_counter::decode(static_cast<const uint8_t*>(counts.mapped) + count_stride() * i));
         return out;
     }
 
@@ -220,11 +221,19 @@ private:
         return pool;
     }
 
+    // Bytes between two passes' counts: raw_counts_bytes, rounded up to the device's
+    // alignment of storage-buffer descriptor offsets.
+    size_t count_stride() const
+    {
+        const size_t a = static_cast<size_t>(ctx_.storage_buffer_alignment());
+        return (raw_counts_bytes + a - 1) / a * a;
+    }
+
     // Records the raw-value counts of every pass into a host buffer (after the passes).
     buffer count_raw(resource_scope& sc, VkCommandBuffer cb) const
     {
         if (!counter_) own_counter_ = std::make_unique<raw_counter>(ctx_), counter_ = own_counter_.get();
-        const size_t bytes = raw_counts_bytes * passes_.size();
+        const size_t stride = count_stride(), bytes = stride * passes_.size();
         const buffer counts = sc.make_device_buffer(bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                                                VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         vkCmdFillBuffer(cb, counts.handle, 0, bytes, 0);
@@ -236,7 +245,7 @@ private:
         for (size_t i = 0; i < passes_.size(); ++i) {
             barrier(cb, raws_[i], VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
                     passes_.reader_stage(), VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-            counter_->record(cb, counter_->make_set(pool, raws_[i], counts, raw_counts_bytes * i), width_, height_);
+            counter_->record(cb, counter_->make_set(pool, raws_[i], counts, stride * i), width_, height_);
         }
         buffer_barrier(cb, counts, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_TRANSFER_BIT);

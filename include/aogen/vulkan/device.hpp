@@ -33,6 +33,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -129,6 +130,8 @@ public:
     // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
     double timestamp_period_ns() const { return timestamp_bits_ ? timestamp_period_ : 0.0; }
     uint32_t timestamp_valid_bits() const { return timestamp_bits_; }
+    // The alignment a storage buffer's descriptor offset must have (VkPhysicalDeviceLimits).
+    VkDeviceSize storage_buffer_alignment() const { return storage_alignment_; }
 
     std::vector<std::string> messages() const
     {
@@ -216,6 +219,7 @@ private:
         name_ = props[chosen].deviceName;
         cpu_ = props[chosen].deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
         timestamp_period_ = props[chosen].limits.timestampPeriod;
+        storage_alignment_ = std::max<VkDeviceSize>(1, props[chosen].limits.minStorageBufferOffsetAlignment);
         queue_family_ = compute_family(physical_);
         const VkQueueFamilyProperties family = queue_families(physical_)[queue_family_];
         timestamp_bits_ = family.timestampValidBits;
@@ -271,6 +275,7 @@ private:
     bool cpu_ = false;
     bool fragment_stores_ = false;
     float timestamp_period_ = 0;
+    VkDeviceSize storage_alignment_ = 1;
     uint32_t timestamp_bits_ = 0;
     mutable std::mutex mutex_;
     std::vector<std::string> messages_;

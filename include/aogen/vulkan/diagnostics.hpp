@@ -10,6 +10,9 @@
 //     inf          +infinity or -infinity
 //     below_zero   finite values < 0
 //     above_one    finite values > 1
+//     max_excess   how far the farthest of those lies outside [0, 1] (0 when none): a
+//                  count of values 1.0000001 from a blur's rounding reads differently from
+//                  one of values 3
 //   The tests are on the bits, as ao_is_finite's are: a driver compiling with fast-math may
 //   assume isnan() false. bound_chain (bound_chain.hpp) runs it after a diagnostic chain's
 //   passes, one dispatch per raw image, and reads the counts back.
@@ -26,24 +29,31 @@
 #include "resources.hpp"
 #include "spirv_cache.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 
 namespace aogen::vulkan {
 
 // What one raw image held.
 struct raw_counts {
     uint64_t nan = 0, inf = 0, below_zero = 0, above_one = 0;
+    float max_excess = 0; // the largest distance outside [0, 1] of a finite value
     uint64_t non_finite() const { return nan + inf; }
     uint64_t out_of_range() const { return below_zero + above_one; }
     raw_counts& operator+=(const raw_counts& o)
     {
         nan += o.nan, inf += o.inf, below_zero += o.below_zero, above_one += o.above_one;
+        max_excess = std::max(max_excess, o.max_excess);
         return *this;
     }
 };
 
-// The counts as the kernel leaves them in its storage buffer: four uints per image.
-inline constexpr size_t raw_counts_bytes = 4 * sizeof(uint32_t);
+// The counts as the kernel leaves them in its storage buffer: five uints per image (the
+// last the bits of max_excess: for floats >= 0 the bits order as the values do, so the
+// kernel keeps the largest with atomicMax).
+inline constexpr size_t raw_counts_words = 5;
+inline constexpr size_t raw_counts_bytes = raw_counts_words * sizeof(uint32_t);
 
 class raw_counter {
 public:
@@ -98,8 +108,15 @@ public:
         vkCmdDispatch(cb, static_cast<uint32_t>((w + workgroup - 1) / workgroup), static_cast<uint32_t>((h + workgroup - 1) / workgroup), 1);
     }
 
-    // The counts as read back from the kernel's four uints.
-    static raw_counts decode(const uint32_t* words) { return {words[0], words[1], words[2], words[3]}; }
+    // The counts as read back from the kernel's raw_counts_words uints at `bytes`.
+    static raw_counts decode(const uint8_t* bytes)
+    {
+        uint32_t words[raw_counts_words];
+        std::memcpy(words, bytes, sizeof words);
+        raw_counts r{words[0], words[1], words[2], words[3]};
+        std::memcpy(&r.max_excess, &words[4], sizeof(float));
+        return r;
+    }
 
 private:
     static codegen::shader_source source()
@@ -116,6 +133,7 @@ layout(set = 0, binding = 1, std430) buffer Counts {
     uint inf_count;
     uint below_zero;
     uint above_one;
+    uint max_excess_bits;
 } counts;
 
 void main()
@@ -128,8 +146,11 @@ void main()
     bool special = (bits & 0x7f800000u) == 0x7f800000u; // exponent all ones: NaN or infinity
     if (special && (bits & 0x007fffffu) != 0u) atomicAdd(counts.nan_count, 1u);
     else if (special) atomicAdd(counts.inf_count, 1u);
-    else if (v < 0.0) atomicAdd(counts.below_zero, 1u);
-    else if (v > 1.0) atomicAdd(counts.above_one, 1u);
+    else if (v < 0.0 || v > 1.0) {
+        if (v < 0.0) atomicAdd(counts.below_zero, 1u);
+        else atomicAdd(counts.above_one, 1u);
+        atomicMax(counts.max_excess_bits, floatBitsToUint(v < 0.0 ? -v : v - 1.0));
+    }
 }
 )glsl";
         return s;

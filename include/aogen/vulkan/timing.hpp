@@ -3,11 +3,14 @@
 // WHAT
 //   time_chains(ctx, chains, options) times one or more bound chains (bound_chain.hpp):
 //     1. warm-up: the chains are recorded back to back, untimed, and submitted again and
-//        again until options.warmup_ms of wall-clock time of continuous GPU work have
-//        passed, so the GPU leaves its idle clock before anything is timed (an NVIDIA H200
-//        idles at 345 MHz and works at 1980: a chain timed from idle reads several times
-//        slow). Each submission is made longer (up to ~1/4 of the warm-up) until the GPU
-//        spends far more time working than waiting for the next submission.
+//        again — at least options.warmup_ms of wall-clock time of continuous GPU work, and
+//        then until two submissions of the same size agree within 3 % (settled), at most
+//        options.warmup_max_ms — so the GPU leaves its idle clock before anything is
+//        timed. Measured on an NVIDIA H200 (aogen_clock_probe, BENCHMARKS.md): idle at
+//        345 MHz, a chain runs 4.6× slow; the clock jumps to 1980 MHz after 250–300 ms of
+//        continuous work, holds through idle gaps of 1 s and has dropped after 2 s. Each
+//        submission is made longer (up to ~1/4 of the warm-up) until the GPU spends far
+//        more time working than waiting for the next submission.
 //     2. rounds: options.rounds command buffers, each holding `iterations` iterations of
 //        every chain, interleaved — A B C A B C ... — with a timestamp before
 //        the first pass and after every pass of every iteration (bound_chain::record). So
@@ -31,7 +34,7 @@
 //
 // USAGE
 //     std::unique_ptr<aogen::vulkan::bound_chain> a = chain_a.bind(g, s), b = chain_b.bind(g, s);
-//     aogen::vulkan::timing_options o;                  // 5 rounds × 20 iterations, 200 ms warm-up, no budget
+//     aogen::vulkan::timing_options o;                  // 5 rounds × 20 iterations, 500 ms+ warm-up, no budget
 //     aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, {a.get(), b.get()}, o);
 //     t.chains[0].total.median;                         // ms
 //     t.chains[1].passes[0].p90;                        // ms, the AO pass of chain b
@@ -52,10 +55,11 @@
 namespace aogen::vulkan {
 
 struct timing_options {
-    int rounds = 5;          // command buffers of timed iterations
-    int iterations = 20;     // iterations of every chain in each round, interleaved (the most, with a budget)
-    double warmup_ms = 200;  // continuous untimed GPU work first (wall clock)
-    double budget_ms = 0;    // > 0: fewer iterations where rounds × iterations would take longer
+    int rounds = 5;              // command buffers of timed iterations
+    int iterations = 20;         // iterations of every chain in each round, interleaved (the most, with a budget)
+    double warmup_ms = 500;      // continuous untimed GPU work first (wall clock), at least...
+    double budget_ms = 0;        // > 0: fewer iterations where rounds × iterations would take longer
+    double warmup_max_ms = 5000; // ...and until settled, at most this
 };
 
 // A distribution of times, in milliseconds: median, 10th and 90th percentiles.
@@ -98,6 +102,8 @@ struct timing_result {
     std::vector<chain_times> chains; // in the order given; empty without timestamps
     double warmup_ms = 0;            // warm-up actually run (wall clock)
     int warmup_submissions = 0;
+    bool settled = false;            // the warm-up's last two submissions agreed (or there was no warm-up)
+    std::chrono::steady_clock::time_point rounds_begin, rounds_end; // when the timed rounds ran (host clock)
     int iterations = 0;              // per round, as run (options.iterations, or fewer under a budget)
     double rounds_gpu_ms = 0;        // Σ over rounds of last − first timestamp
     double rounds_wall_ms = 0;       // Σ over rounds of submit-to-fence wall clock
@@ -166,21 +172,30 @@ inline double run_untimed(context& ctx, const std::vector<const bound_chain*>& c
     return elapsed_ms(submitted);
 }
 
-// Keeps the GPU busy with `chains` for `ms` of wall-clock time; returns the wall-clock ms
-// one iteration of every chain took in the last submission (0 when `ms` allowed none).
-inline double warm_up(context& ctx, const std::vector<const bound_chain*>& chains, double ms, VkCommandBuffer cb, VkFence fence,
-                      timing_result& out)
+// Keeps the GPU busy with `chains` for at least o.warmup_ms of wall-clock time, then until
+// settled (two submissions of the same size within 3 % of each other), at most
+// o.warmup_max_ms; returns the wall-clock ms one iteration of every chain took in the last
+// submission (0 when the warm-up allowed none).
+inline double warm_up(context& ctx, const std::vector<const bound_chain*>& chains, const timing_options& o, VkCommandBuffer cb,
+                      VkFence fence, timing_result& out)
 {
     const auto start = std::chrono::steady_clock::now();
     int repeats = 1; // iterations of every chain per submission
-    double per_iteration = 0;
-    while (elapsed_ms(start) < ms) {
+    double per_iteration = 0, previous = 0;
+    out.settled = o.warmup_ms <= 0;
+    while (elapsed_ms(start) < o.warmup_ms || (!out.settled && elapsed_ms(start) < std::max(o.warmup_ms, o.warmup_max_ms))) {
         const double took = run_untimed(ctx, chains, repeats, cb, fence);
         ++out.warmup_submissions;
         per_iteration = took / repeats;
         // Longer submissions until one fills a quarter of the warm-up: the host's turnaround
         // between them is then a small fraction of the GPU's working time.
-        if (took < ms / 4 && repeats < (1 << 16)) repeats *= 2;
+        if (took < o.warmup_ms / 4 && repeats < (1 << 16)) {
+            repeats *= 2;
+            previous = 0; // a different size: not comparable
+            continue;
+        }
+        out.settled = previous > 0 && std::fabs(per_iteration - previous) <= 0.03 * previous;
+        previous = per_iteration;
     }
     out.warmup_ms = elapsed_ms(start);
     return per_iteration;
@@ -202,6 +217,7 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
     require_range("vulkan timing iterations", o.iterations, 1, 100000);
     if (!(o.warmup_ms >= 0)) fail("vulkan timing warmup_ms", format_number(o.warmup_ms) + " is out of range", "valid: >= 0");
     if (!(o.budget_ms >= 0)) fail("vulkan timing budget_ms", format_number(o.budget_ms) + " is out of range", "valid: >= 0 (0: no budget)");
+    if (!(o.warmup_max_ms >= 0)) fail("vulkan timing warmup_max_ms", format_number(o.warmup_max_ms) + " is out of range", "valid: >= 0");
     if (chains.empty()) fail("vulkan timing", "no chains", "valid: at least one bound chain");
     timing_result out;
     if (ctx.timestamp_valid_bits() == 0) return out;
@@ -213,7 +229,7 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
     check(vkCreateFence(ctx.device(), &fci, nullptr, &fence), "vkCreateFence");
     sc.own(fence, vkDestroyFence);
 
-    double per_iteration_ms = detail::warm_up(ctx, chains, o.warmup_ms, cb, fence, out);
+    double per_iteration_ms = detail::warm_up(ctx, chains, o, cb, fence, out);
     if (o.budget_ms > 0 && per_iteration_ms == 0) per_iteration_ms = detail::run_untimed(ctx, chains, 1, cb, fence); // to size the rounds
     out.iterations = detail::iterations_for(o, per_iteration_ms);
 
@@ -232,6 +248,7 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
     std::vector<std::vector<std::vector<double>>> per_pass(chains.size()); // [chain][pass][sample]
     out.chains.resize(chains.size());
     for (size_t c = 0; c < chains.size(); ++c) per_pass[c].resize(chains[c]->passes().size());
+    out.rounds_begin = std::chrono::steady_clock::now();
     for (int round = 0; round < o.rounds; ++round) {
         detail::begin(cb);
         vkCmdResetQueryPool(cb, pool, 0, queries);
@@ -254,6 +271,7 @@ inline timing_result time_chains(context& ctx, const std::vector<const bound_cha
             out.chains[c].total_ms.insert(out.chains[c].total_ms.end(), totals.begin(), totals.end());
         }
     }
+    out.rounds_end = std::chrono::steady_clock::now();
     for (size_t c = 0; c < chains.size(); ++c) {
         for (const std::vector<double>& samples : per_pass[c]) out.chains[c].passes.push_back(spread_of(samples));
         out.chains[c].total = spread_of(out.chains[c].total_ms);

@@ -5,7 +5,8 @@
 //   runs sits at a fraction of its working clock. clock_monitor samples the SM clock
 //   (`nvidia-smi --query-gpu=name,clocks.sm,clocks.max.sm`) on a thread of its own every
 //   `period_ms` between start() and stop(), for the GPU whose name the Vulkan device's
-//   contains ("NVIDIA H200" in "NVIDIA H200"); stop() returns the samples. Where
+//   contains ("NVIDIA H200" in "NVIDIA H200"), each reading with the host time it came at,
+//   so a caller keeps the ones taken while it timed (not those of a warm-up). Where
 //   nvidia-smi is missing or names no such GPU (lavapipe, another vendor), available() is
 //   false and no sample is ever taken. It only reads: it never sets a clock or a power limit.
 //
@@ -13,8 +14,9 @@
 //     aogen_report::clock_monitor clocks(ctx.device_name());
 //     clocks.start();
 //     ... time something ...
-//     std::vector<double> mhz = clocks.stop();      // empty when not available()
-//     clocks.timeline();                            // the same readings with their ms since start()
+//     clocks.stop();
+//     std::vector<double> mhz = clocks.between(t0, t1);   // readings in [t0, t1]; none when not available()
+//     clocks.timeline();                                  // every reading, with its time
 //     clocks.max_mhz();                             // the GPU's maximum SM clock, 0 if unknown
 #pragma once
 
@@ -44,8 +46,9 @@ public:
     bool available() const { return available_; }
     double max_mhz() const { return max_mhz_; }
 
-    // One reading: milliseconds since start() (when nvidia-smi answered), SM MHz.
+    // One reading: when nvidia-smi answered (host clock, and ms since start()), SM MHz.
     struct sample {
+        std::chrono::steady_clock::time_point at;
         double ms = 0, mhz = 0;
     };
 
@@ -59,23 +62,30 @@ public:
             while (running_) {
                 double sm = 0, max = 0;
                 if (read(sm, max)) {
-                    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+                    const auto at = std::chrono::steady_clock::now();
+                    const double ms = std::chrono::duration<double, std::milli>(at - started).count();
                     std::lock_guard<std::mutex> lock(mutex_);
-                    samples_.push_back({ms, sm});
+                    samples_.push_back({at, ms, sm});
                 }
                 for (int waited = 0; running_ && waited < period_ms_; waited += 10) std::this_thread::sleep_for(std::chrono::milliseconds(10));
             }
         });
     }
 
-    // The SM clocks (MHz) sampled since start().
-    std::vector<double> stop()
+    // Ends the sampling; timeline() has the readings.
+    void stop()
     {
-        if (!running_) return {};
+        if (!running_) return;
         running_ = false;
         thread_.join();
+    }
+
+    // The SM clocks (MHz) read between `from` and `to` in the last start()..stop().
+    std::vector<double> between(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) const
+    {
         std::vector<double> mhz;
-        for (const sample& s : timeline()) mhz.push_back(s.mhz);
+        for (const sample& s : timeline())
+            if (s.at >= from && s.at <= to) mhz.push_back(s.mhz);
         return mhz;
     }
 

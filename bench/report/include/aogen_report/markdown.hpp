@@ -56,7 +56,11 @@ inline std::string raw_non_finite(const aogen::vulkan::raw_counts& r, bool measu
 }
 inline std::string raw_range(const aogen::vulkan::raw_counts& r, bool measured)
 {
-    return measured ? std::to_string(r.out_of_range()) : "–";
+    if (!measured) return "–";
+    if (r.out_of_range() == 0) return "0";
+    char excess[32];
+    std::snprintf(excess, sizeof excess, "%.2g", double(r.max_excess));
+    return std::to_string(r.out_of_range()) + " (by ≤ " + excess + ")";
 }
 
 inline std::string clocks_text(const clock_record& c)
@@ -87,7 +91,13 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
        << " back-to-back iterations of every chain, interleaved" << (d.fetch_floor ? " with their fetch floors" : "")
        << (d.timing.budget_ms > 0 ? " (at most " + std::to_string(d.timing.iterations) + ", as many as fit " + fixed(d.timing.budget_ms, 0) + " ms)" : "")
        << "; GPU timestamps around every pass; median and p10–p90 of the iterations\n";
-    md << "- SM clock while timing: " << detail::clocks_text(d.clocks) << "\n";
+    md << "- SM clock during the timed rounds: " << detail::clocks_text(d.clocks) << "\n";
+    std::string unsettled;
+    for (const scene_record& s : d.scenes)
+        if (!s.settled) unsettled += (unsettled.empty() ? "" : ", ") + s.scene.name;
+    if (!unsettled.empty())
+        md << "- **Warm-up did not settle** (two submissions 3 % apart) within " << fixed(d.timing.warmup_max_ms, 0) << " ms on: " << unsettled
+           << " — those scenes' times may include a clock change\n";
     double gpu = 0, wall = 0;
     for (const scene_record& s : d.scenes) gpu += s.timed_gpu_ms, wall += s.timed_wall_ms;
     if (wall > 0)
@@ -105,7 +115,7 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
           "(bench/report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
           "variant is bound by its memory traffic, far above it by its arithmetic. *Raw NaN/Inf* and *raw out of [0, 1]* count "
           "the values the passes computed before the guard that keeps the output finite and in range (all passes, all "
-          "scenes); the output itself is always finite. "
+          "scenes), with how far the farthest lay outside [0, 1]; the output itself is always finite and in range. "
           "★ marks a Pareto-optimal variant: no other variant is both at least as fast and at least as accurate.\n\n";
     md << "![error against time](error_vs_time.png)\n\n";
 

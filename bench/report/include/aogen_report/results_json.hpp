@@ -11,12 +11,12 @@
 //     "calibration": "...",
 //     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
 //                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
-//                   iterations}],                    // per round, as the budget allowed
+//                   iterations, settled}],           // per round, as the budget allowed; warm-up settled
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
 //                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, rmse, rmse_calibrated,
-//                   raw: {measured, nan, inf, below_zero, above_one}, pareto, pareto_calibrated,
+//                   raw: {measured, nan, inf, below_zero, above_one, max_excess}, pareto, pareto_calibrated,
 //                   scenes: [{scene, skipped | {ms, ms_p10, ms_p90, pass_ms, floor_ms, power,
-//                             raw: [{nan, inf, below_zero, above_one} per pass],
+//                             raw: [{nan, inf, below_zero, above_one, max_excess} per pass],
 //                             default: {rmse, mae, mean_signed, p99_abs, non_finite, pixels},
 //                             calibrated: {...}}]}],
 //     "feature_saving": [{selected, everything_on, selected_instructions, everything_on_instructions,
@@ -49,7 +49,7 @@ inline nlohmann::json metrics_json(const error_metrics& m)
 
 inline nlohmann::json raw_json(const aogen::vulkan::raw_counts& r)
 {
-    return {{"nan", r.nan}, {"inf", r.inf}, {"below_zero", r.below_zero}, {"above_one", r.above_one}};
+    return {{"nan", r.nan}, {"inf", r.inf}, {"below_zero", r.below_zero}, {"above_one", r.above_one}, {"max_excess", r.max_excess}};
 }
 
 inline nlohmann::json clocks_json(const clock_record& c)
@@ -134,7 +134,8 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                {"clocks", detail::clocks_json(s.clocks)},
                                {"timed_gpu_ms", s.timed_gpu_ms},
                                {"timed_wall_ms", s.timed_wall_ms},
-                               {"iterations", s.iterations}});
+                               {"iterations", s.iterations},
+                               {"settled", s.settled}});
     j["variants"] = nlohmann::json::array();
     for (const variant_record& v : d.variants) j["variants"].push_back(detail::variant_json(v, d.scenes));
     j["feature_saving"] = nlohmann::json::array();

@@ -77,8 +77,8 @@ struct report_settings {
     int width = 0, height = 0;       // every scene's resolution; 0: each scene's own
     int grid = 64;                   // reference rays per pixel: grid × grid
     // Per scene: 3 rounds of up to 20 iterations of every chain, as many as fit ~1 s of GPU
-    // work (a GPU runs 20, lavapipe 1), after a 200 ms warm-up.
-    aogen::vulkan::timing_options timing{3, 20, 200.0, 1000.0};
+    // work (a GPU runs 20, lavapipe 1), after a warm-up of at least 500 ms, until settled.
+    aogen::vulkan::timing_options timing{3, 20, 500.0, 1000.0};
     bool fetch_floor = true;         // time each variant's fetch floor beside it
     bool feature_saving = true;      // run the point-cloud twins of SSAO variants
     size_t bound_bytes = size_t(2) << 30; // output images bound at once for timing, at most
@@ -101,6 +101,7 @@ struct scene_record {
     clock_record clocks;             // SM clock while this scene was timed (nvidia-smi)
     double timed_gpu_ms = 0, timed_wall_ms = 0; // the timing rounds: timestamp span, host wall clock
     int iterations = 0;              // per round, as run (the budget's choice)
+    bool settled = true;             // every warm-up ended with two agreeing submissions
     bool mesh_only() const { return !scene.renderer.point_cloud; }
 };
 
@@ -351,12 +352,18 @@ struct timed_chain {
 inline size_t output_bytes(const aogen::vulkan::bound_chain& b) { return b.passes().size() * size_t(b.width()) * b.height(); }
 
 // Times `chains` together (interleaved) and stores each one's times in its run record;
-// the rounds' timestamp span and wall clock are added to the scene's.
-inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& chains, const aogen::vulkan::timing_options& o, scene_record& scene)
+// the rounds' timestamp span and wall clock are added to the scene's, and the SM clocks
+// read during the rounds (not the warm-up) to `mhz`.
+inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& chains, const aogen::vulkan::timing_options& o, scene_record& scene,
+                       clock_monitor& clocks, std::vector<double>& mhz)
 {
     std::vector<const aogen::vulkan::bound_chain*> bound;
     for (const timed_chain& c : chains) bound.push_back(c.bound.get());
+    clocks.start();
     const aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx, bound, o);
+    clocks.stop();
+    for (double m : clocks.between(t.rounds_begin, t.rounds_end)) mhz.push_back(m);
+    scene.settled = scene.settled && t.settled;
     if (t.chains.empty()) return; // no timestamps
     scene.timed_gpu_ms += t.rounds_gpu_ms, scene.timed_wall_ms += t.rounds_wall_ms;
     scene.iterations = scene.iterations == 0 ? t.iterations : std::min(scene.iterations, t.iterations);
@@ -567,9 +574,7 @@ inline report_data run_report(const report_settings& settings)
         size_t group_bytes = 0;
         const auto flush = [&] {
             if (group.empty()) return;
-            clocks.start();
-            detail::time_group(ctx, group, settings.timing, out.scenes.back());
-            for (double mhz : clocks.stop()) scene_clocks.push_back(mhz);
+            detail::time_group(ctx, group, settings.timing, out.scenes.back(), clocks, scene_clocks);
             group.clear(), group_bytes = 0;
         };
         const auto add = [&](run_record& run, bool floor, const aogen::vulkan::pass_pipelines& passes, const aogen::variant& v) {
