@@ -6,12 +6,10 @@
 
 float ao_pass(ivec2 target_pixel)
 {
-    ivec2 p = ao_full_pixel(target_pixel);
-    float depth = ao_load_depth(p);
-    if (ao_is_background(depth)) return 1.0;
-    float sum = depth + ao_floor_normal_fetches(p);
-    float radius_pixels = ao_floor_radius_pixels(ao_view_z(ao_pixel_uv(p), depth));
-    vec2 rotation = ao_noise_rotation(target_pixel);
+    ivec2 p;
+    float sum, radius_pixels;
+    vec2 rotation;
+    if (!ao_floor_centre(target_pixel, p, sum, rotation, radius_pixels)) return 1.0;
     vec2 centre = vec2(p) + 0.5;
     for (int s = 0; s < AO_GTAO_SLICES; ++s) {
         float angle = float(s) * (AO_PI / float(AO_GTAO_SLICES));

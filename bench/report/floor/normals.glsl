@@ -1,5 +1,6 @@
 // floor/normals.glsl -- the fetch floor's common/normals.glsl: the texel fetches that
-// finding the surface normal costs, without the normal itself.
+// finding the surface normal costs, without the normal itself; and what both AO floors
+// (ssao.glsl, gtao.glsl) read at the centre pixel before their samples.
 
 #if !defined(AO_NORMALS_RECONSTRUCTED)
 layout(set = 0, binding = AO_BINDING_NORMALS) uniform sampler2D u_normals;
@@ -36,4 +37,24 @@ float ao_floor_radius_pixels(float view_z)
 #endif
     float radius_pixels = min(u.radius * pixels_per_unit, length(fsize));
     return ao_is_finite(radius_pixels) ? radius_pixels : 0.0;
+}
+
+// common/noise.glsl, which comes after this file, defines it.
+vec2 ao_noise_rotation(ivec2 p);
+
+// The centre of an AO floor at target pixel t: false on background (as the real passes,
+// which return 1 there); otherwise its full-resolution pixel p, the sum of the centre's
+// depth, normal and noise fetches, the noise rotation and the radius in pixels.
+bool ao_floor_centre(ivec2 target_pixel, out ivec2 p, out float sum, out vec2 rotation, out float radius_pixels)
+{
+    p = ao_full_pixel(target_pixel);
+    float depth = ao_load_depth(p);
+    sum = depth;
+    rotation = vec2(1.0, 0.0);
+    radius_pixels = 0.0;
+    if (ao_is_background(depth)) return false;
+    sum += ao_floor_normal_fetches(p);
+    radius_pixels = ao_floor_radius_pixels(ao_view_z(ao_pixel_uv(p), depth));
+    rotation = ao_noise_rotation(target_pixel);
+    return true;
 }

@@ -191,12 +191,7 @@ private:
     // `img` (in `from`) filled with `value` and left in SHADER_READ_ONLY_OPTIMAL.
     void clear_output(VkCommandBuffer cb, const image& img, float value, VkImageLayout from) const
     {
-        barrier(cb, img, from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-        VkClearColorValue cc{};
-        cc.float32[0] = cc.float32[1] = cc.float32[2] = cc.float32[3] = value;
-        const VkImageSubresourceRange range{img.aspect, 0, 1, 0, 1};
-        vkCmdClearColorImage(cb, img.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &cc, 1, &range);
+        resource_scope::clear(cb, img, value, from);
         barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
     }

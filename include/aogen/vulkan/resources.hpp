@@ -216,12 +216,13 @@ public:
         return r;
     }
 
-    // Fills a new (UNDEFINED) colour image with `value` in every channel, leaving it in
-    // TRANSFER_DST_OPTIMAL; the caller's next barrier moves it on.
-    static void clear(VkCommandBuffer cb, const image& img, float value)
+    // Fills colour image `img`, now in layout `from` (UNDEFINED for a new one), with `value`
+    // in every channel once all earlier work is done, leaving it in TRANSFER_DST_OPTIMAL;
+    // the caller's next barrier moves it on.
+    static void clear(VkCommandBuffer cb, const image& img, float value, VkImageLayout from = VK_IMAGE_LAYOUT_UNDEFINED)
     {
-        barrier(cb, img, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        barrier(cb, img, from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                VK_PIPELINE_STAGE_TRANSFER_BIT);
         VkClearColorValue cc{};
         cc.float32[0] = cc.float32[1] = cc.float32[2] = cc.float32[3] = value;
         const VkImageSubresourceRange range{img.aspect, 0, 1, 0, 1};

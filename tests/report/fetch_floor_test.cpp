@@ -1,0 +1,69 @@
+// The fetch floor (bench/report/floor/, aogen_report/fetch_floor.hpp): for every variant
+// of the default matrix, its floor is a list of compute shaders that glslang compiles and
+// spirv-val accepts, one per pass of the variant, declaring exactly the variant's compute
+// resources (so it binds like the variant), and each smaller than the pass it stands in
+// for (the shading is gone).
+#include <aogen_report/fetch_floor.hpp>
+
+#include <aogen/compile.hpp>
+#include <aogen/matrix.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <map>
+
+namespace {
+
+bool same_resources(const std::vector<aogen::codegen::resource>& a, const std::vector<aogen::codegen::resource>& b)
+{
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].binding != b[i].binding || a[i].kind != b[i].kind || a[i].name != b[i].name || a[i].format != b[i].format) return false;
+    return true;
+}
+
+uint32_t instructions(const aogen::codegen::shader_source& s, std::map<std::string, uint32_t>& cache)
+{
+    auto it = cache.find(s.glsl);
+    if (it != cache.end()) return it->second;
+    const aogen::compile::compiled c = aogen::compile::compile(s.glsl, s.stage, s.name, {aogen::compile::target::spv});
+    return cache[s.glsl] = c.refl.spirv_instructions;
+}
+
+} // namespace
+
+TEST_CASE("report: every default-matrix variant's fetch floor compiles, binds like the variant and is smaller")
+{
+    std::map<std::string, uint32_t> compiled;
+    for (const aogen::variant& v : aogen::default_matrix()) {
+        INFO(aogen::to_name(v));
+        const std::vector<aogen::codegen::shader_source> floor = aogen_report::floor_sources(v);
+        const std::vector<aogen::codegen::shader_source> twin = aogen::codegen::generate(aogen_report::floor_variant(v));
+        REQUIRE(floor.size() == twin.size());
+        REQUIRE(floor.size() == aogen::passes(v).size());
+        for (size_t i = 0; i < floor.size(); ++i) {
+            INFO(floor[i].name);
+            CHECK(floor[i].stage == aogen::shader_stage::compute);
+            CHECK(floor[i].pass == twin[i].pass);
+            CHECK(same_resources(floor[i].resources, twin[i].resources));
+            CHECK(instructions(floor[i], compiled) < instructions(twin[i], compiled));
+        }
+    }
+}
+
+TEST_CASE("report: a floor replaces exactly the shading templates")
+{
+    CHECK(!aogen_report::floor_replacement("gtao.glsl").empty());
+    CHECK(!aogen_report::floor_replacement("common/normals.glsl").empty());
+    CHECK(aogen_report::floor_replacement("common/depth.glsl").empty());
+    CHECK(aogen_report::floor_replacement("entry_compute.glsl").empty());
+    // The variant's own depth and entry code stay in the floor.
+    aogen::variant v;
+    v.tech = aogen::technique::gtao;
+    const std::vector<aogen::codegen::shader_source> floor = aogen_report::floor_sources(v);
+    CHECK(floor[0].glsl.find(aogen::codegen::embedded_template("common/depth.glsl")) != std::string::npos);
+    CHECK(floor[0].glsl.find(aogen::codegen::embedded_template("gtao.glsl")) == std::string::npos);
+    // A fragment variant's floor is the compute kernel of the same axes.
+    v.stage = aogen::pipeline_stage::fragment;
+    CHECK(aogen_report::floor_sources(v)[0].stage == aogen::shader_stage::compute);
+}
