@@ -11,6 +11,9 @@
 //     2. otherwise the first discrete GPU;
 //     3. otherwise Mesa's lavapipe (a name containing "llvmpipe");
 //     4. otherwise the first device with Vulkan 1.1 and a compute queue.
+//   Features enabled where the device has them: shaderStorageImageExtendedFormats (r8,
+//   r32f and rgba16f storage images) and fragmentStoresAndAtomics (the raw-value images of
+//   diagnostic fragment passes; fragment_stores() says whether it is there).
 //   With device_options::validation and VK_LAYER_KHRONOS_validation installed, the layer is
 //   enabled with a debug messenger that records every warning and error
 //   message into messages(); tests require it to stay empty. (Info messages are the
