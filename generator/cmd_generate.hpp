@@ -252,6 +252,7 @@ struct generate_command {
 
     void run() const
     {
+        require_writable_folder(out, "--out"); // before minutes of compiling, not after
         variant_generator g;
         for (const std::string& t : split_list(targets)) g.targets.push_back(compile::target_from_name(t, "--targets"));
         if (g.targets.empty()) fail("--targets", "is empty", "valid: " + compile::target_list());
@@ -277,8 +278,9 @@ struct generate_command {
         }
         g.files["manifest.json"] = g.manifest.dump(2) + "\n";
         g.files["aogen_variants.hpp"] = g.header_text();
-        size_t written = 0;
-        for (const auto& [path, bytes] : g.files) written += write_file_atomically(std::filesystem::path(out) / path, bytes);
+        file_set set(out);
+        for (const auto& [path, bytes] : g.files) set.add(path, bytes);
+        const size_t written = set.commit().size();
         if (!quiet)
             std::cerr << "aogen: " << selected.size() << " variants, " << g.files.size() << " files in " << out << " ("
                       << written << " written, " << g.files.size() - written << " unchanged)\n";

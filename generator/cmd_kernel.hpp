@@ -52,7 +52,7 @@ struct kernel_command {
         if (format == "cpp") return emit(out, header + vec4_array(name, samples, text_language::cpp));
         if (format == "glsl") return emit(out, header + vec4_array(name, samples, text_language::glsl));
         if (format == "wgsl") return emit(out, header + vec4_array(name, samples, text_language::wgsl));
-        fail("--format", "'" + format + "' is not a kernel format", "valid: json, cpp, glsl, wgsl, bin");
+        fail("--format", quote(format) + " is not a kernel format", "valid: json, cpp, glsl, wgsl, bin");
     }
 };
 

@@ -59,7 +59,7 @@ struct noise_command {
                                 byte_list(bytes) + "\n};\n";
             return emit(out, text);
         }
-        fail("--format", "'" + format + "' is not a noise format", "valid: json, cpp, bin");
+        fail("--format", quote(format) + " is not a noise format", "valid: json, cpp, bin");
     }
 };
 

@@ -25,6 +25,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 
@@ -172,17 +173,21 @@ struct seeds_command {
 
     void run() const
     {
+        require_writable_folder(out, "--out");
         seeds_artifacts a;
         a.add_ssao(presets::taos_ssao());
         a.add_gtao(presets::taos_gtao());
         a.add_ssao(presets::unique_engine_ssao());
         a.add_ssao(presets::pointcloud_viewer_ssao());
         a.add("manifest.json", a.manifest());
-        size_t written = 0;
+        // Every file or none: what was written is said once all of it is in place.
+        file_set set(out);
+        for (const auto& [path, bytes] : a.files) set.add(path, bytes);
+        const std::vector<std::string> changed = set.commit();
+        const size_t written = changed.size();
         for (const auto& [path, bytes] : a.files) {
-            const bool changed = write_file_atomically(std::filesystem::path(out) / path, bytes);
-            written += changed;
-            std::cout << (changed ? "wrote     " : "unchanged ") << out << "/" << path << " (" << bytes.size() << " bytes)\n";
+            const bool was_written = std::binary_search(changed.begin(), changed.end(), path);
+            std::cout << (was_written ? "wrote     " : "unchanged ") << out << "/" << path << " (" << bytes.size() << " bytes)\n";
         }
         std::cout << a.files.size() << " files in " << out << " (" << written << " written, "
                   << a.files.size() - written << " unchanged)\n";

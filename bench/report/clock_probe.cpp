@@ -113,7 +113,7 @@ int main(int argc, char** argv)
         }
         const std::string text = j.dump(1) + "\n";
         if (out.empty()) std::cout << text;
-        else aogen::tools::write_file_atomically(out, text);
+        else aogen::tools::write_file(out, text);
     } catch (const std::exception& e) {
         std::cerr << "aogen_clock_probe: " << e.what() << "\n";
         return 1;

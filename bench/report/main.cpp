@@ -21,11 +21,17 @@
 #include <CLI/CLI.hpp>
 
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -77,7 +83,7 @@ void parse_size(const std::string& text, int& width, int& height)
     width = parts.size() == 2 ? number(parts[0]) : -1;
     height = parts.size() == 2 ? number(parts[1]) : -1;
     if (width < 8 || height < 8 || width > 4096 || height > 4096)
-        aogen::fail("--size", "\"" + text + "\" is not a size", "valid: WIDTHxHEIGHT, each 8..4096, e.g. 320x180");
+        aogen::fail("--size", aogen::quote(text) + " is not a size", "valid: WIDTHxHEIGHT, each 8..4096, e.g. 320x180");
 }
 
 // Rays per pixel = grid², grid even (stratum pairs) and >= 32: at least 1024 rays.
@@ -100,7 +106,7 @@ std::string file_stem(const std::string& name)
 
 // Per scene, the variants Pareto-optimal on it by time and calibrated error (fastest
 // first, at most 8): reference | variant | |error|.
-std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report::report_data& d, const std::filesystem::path& out)
+std::map<std::string, aogen_report::strip_file> add_strips(const aogen_report::report_data& d, aogen::tools::file_set& out)
 {
     std::map<std::string, aogen_report::strip_file> files;
     const std::vector<size_t> order = aogen_report::detail::by_time(d.variants);
@@ -128,17 +134,75 @@ std::map<std::string, aogen_report::strip_file> write_strips(const aogen_report:
             file.variants.push_back(v.name);
         }
         if (file.variants.empty()) continue;
-        aogen::tools::write_file_atomically(out / file.path, aogen_report::encode_png(strip.image()));
+        out.add(file.path, aogen_report::encode_png(strip.image()));
         files[scene.scene.name] = file;
     }
     return files;
 }
 
-void plot(const std::string& python, const std::string& script, const std::filesystem::path& out)
+// Runs `argv` (no shell: paths are passed as they are), its output discarded but for the
+// last line of its standard error, kept in `last_line` for an error message. Its exit
+// status, or -1 when it could not be started.
+int run_program(const std::vector<std::string>& argv, std::string& last_line)
 {
-    const std::string command = "'" + python + "' '" + script + "' '" + (out / "results.json").string() + "' '" + (out / "error_vs_time.png").string() + "'";
-    if (std::system(command.c_str()) != 0)
-        aogen::fail("error_vs_time.png", "the plot script failed: " + command, "valid: python3 with matplotlib (python3-matplotlib)");
+    int pipe_fds[2];
+    if (::pipe(pipe_fds) != 0) return -1;
+    const pid_t pid = ::fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        const int null = ::open("/dev/null", O_WRONLY);
+        ::dup2(null, 1);
+        ::dup2(pipe_fds[1], 2);
+        ::close(pipe_fds[0]);
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        ::execvp(args[0], args.data());
+        std::fprintf(stderr, "cannot run %s: %s\n", argv[0].c_str(), std::strerror(errno));
+        ::_exit(127);
+    }
+    ::close(pipe_fds[1]);
+    std::string err;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(pipe_fds[0], buffer, sizeof buffer)) != 0;)
+        if (n > 0) err.append(buffer, size_t(n));
+        else if (errno != EINTR) break;
+    ::close(pipe_fds[0]);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
+    last_line = err.substr(err.find_last_of('\n') == std::string::npos ? 0 : err.find_last_of('\n') + 1);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// aogen::error unless `python` runs and imports matplotlib, and the plot script is there:
+// checked before the run, so a missing plotter fails in a second, not after the references.
+void require_plotter(const std::string& python, const std::string& script)
+{
+    const std::string valid = "valid: --python naming a python3 with matplotlib (python3-matplotlib)";
+    std::string why;
+    if (run_program({python, "-c", "import matplotlib"}, why) != 0)
+        aogen::fail("--python", aogen::quote(python) + " cannot import matplotlib" + (why.empty() ? "" : ": " + aogen::quote(why)), valid);
+    std::ifstream in(script);
+    if (!in) aogen::fail("--plot-script", aogen::quote(script) + " cannot be read", "valid: the report's plot_error_vs_time.py");
+}
+
+// error_vs_time.png of `results` (results.json's text), made in a scratch folder of its own.
+std::string plot(const std::string& python, const std::string& script, const std::string& results)
+{
+    std::string scratch = (std::filesystem::temp_directory_path() / "aogen_report.XXXXXX").string();
+    if (!::mkdtemp(scratch.data())) aogen::fail("error_vs_time.png", "no scratch folder: " + std::string(std::strerror(errno)), "valid: a writable TMPDIR");
+    const std::filesystem::path dir(scratch);
+    struct cleanup {
+        std::filesystem::path dir;
+        ~cleanup() { std::error_code ec; std::filesystem::remove_all(dir, ec); }
+    } remove{dir};
+    aogen::tools::write_file(dir / "results.json", results);
+    std::string why;
+    if (run_program({python, script, (dir / "results.json").string(), (dir / "error_vs_time.png").string()}, why) != 0)
+        aogen::fail("error_vs_time.png", "the plot script failed" + (why.empty() ? "" : ": " + aogen::quote(why)),
+                    "valid: python3 with matplotlib (python3-matplotlib)");
+    return aogen::tools::read_file((dir / "error_vs_time.png").string());
 }
 
 } // namespace
@@ -194,20 +258,29 @@ int main(int argc, char** argv)
         std::ostringstream command;
         for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
         const std::filesystem::path folder(out);
-        // After every scene but the last: the tables so far, marked partial.
+        // Everything a run needs besides its own work, checked before it starts.
+        aogen::tools::require_writable_folder(folder, "--out");
+        require_plotter(python, plot_script);
+        // After every scene but the last: the tables so far, marked partial, as one set.
         s.scene_done = [&](const aogen_report::report_data& so_far) {
             if (so_far.scenes.size() == s.scenes.size()) return;
             const aogen_report::report_meta partial{command.str(), false};
-            aogen::tools::write_file_atomically(folder / "results.json", aogen_report::results_json(so_far, partial));
-            aogen::tools::write_file_atomically(folder / "report.md", aogen_report::report_markdown(so_far, partial, {}));
+            aogen::tools::file_set set(folder);
+            set.add("results.json", aogen_report::results_json(so_far, partial));
+            set.add("report.md", aogen_report::report_markdown(so_far, partial, {}));
+            set.commit();
             s.progress("wrote the " + std::to_string(so_far.scenes.size()) + " scenes so far to " + (folder / "results.json").string());
         };
         const aogen_report::report_data d = aogen_report::run_report(s);
+        // The finished report: every file made first, then written all together.
         const aogen_report::report_meta meta{command.str(), true};
-        aogen::tools::write_file_atomically(folder / "results.json", aogen_report::results_json(d, meta));
-        const auto strips = write_strips(d, folder);
-        aogen::tools::write_file_atomically(folder / "report.md", aogen_report::report_markdown(d, meta, strips));
-        plot(python, plot_script, folder);
+        aogen::tools::file_set set(folder);
+        const std::string results = aogen_report::results_json(d, meta);
+        set.add("results.json", results);
+        const auto strips = add_strips(d, set);
+        set.add("report.md", aogen_report::report_markdown(d, meta, strips));
+        set.add("error_vs_time.png", plot(python, plot_script, results));
+        set.commit();
         s.progress("wrote " + (folder / "report.md").string() + " (compile " + aogen_report::detail::fixed(d.phases.compile, 1) + " s, trace " +
                    aogen_report::detail::fixed(d.phases.trace, 1) + " s, score " + aogen_report::detail::fixed(d.phases.score, 1) + " s, time " +
                    aogen_report::detail::fixed(d.phases.time, 1) + " s; " + std::to_string(d.phases.runs) + " variant × scene runs)");

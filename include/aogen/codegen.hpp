@@ -164,7 +164,7 @@ inline void validate(const options& o)
         if (o.output_format == f) return;
     std::string valid;
     for (std::string_view f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f);
-    fail("output format", "'" + o.output_format + "' is not a storage image format aogen writes", "valid: " + valid);
+    fail("output format", quote(o.output_format) + " is not a storage image format aogen writes", "valid: " + valid);
 }
 
 // One descriptor a shader declares. `name` is the role ("uniforms", "depth", "normals",

@@ -12,6 +12,7 @@
 //
 // Helpers here build those messages so that every header words them the same way:
 //     aogen::fail("noise size", "3 is not a power of two", "valid: 1, 2, 4, ..., 64");
+//     aogen::quote(user_text)    // "'ssao-s9000'": what the user wrote, safe to print
 //     aogen::require_range("kernel count", n, 1, 256);
 //     aogen::require_finite_range("ssao.radius", r, 0.0, 1e9);  // inclusive
 #pragma once
@@ -58,6 +59,36 @@ inline std::string format_number(int value) { return std::to_string(value); }
 inline std::string format_number(unsigned value) { return std::to_string(value); }
 inline std::string format_number(long value) { return std::to_string(value); }
 inline std::string format_number(unsigned long value) { return std::to_string(value); }
+
+// What the user wrote, as an error message quotes it: in single quotes, every byte that
+// is not printable ASCII written as \xNN (a control character in a name must not reach
+// the terminal raw: "\x1b[31m" would colour it), and at most `limit` characters of the
+// original kept — a longer text ends in "... (N bytes)", so an 18 kB name gives a short
+// line. The one way aogen echoes user text.
+inline std::string quote(std::string_view text, size_t limit = 80)
+{
+    static const char hex[] = "0123456789abcdef";
+    std::string out = "'";
+    const size_t kept = text.size() > limit ? limit : text.size();
+    for (size_t i = 0; i < kept; ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7f && c != '\\') out += char(c);
+        else if (c == '\\') out += "\\\\";
+        else out.append("\\x").append(1, hex[c >> 4]).append(1, hex[c & 15]);
+    }
+    out += "'";
+    if (kept < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
+    return out;
+}
+
+// A name or path as the subject of a message: as it is when it is printable ASCII of at
+// most `limit` characters (a file name reads best bare), quote()d otherwise.
+inline std::string printable(std::string_view text, size_t limit = 200)
+{
+    bool plain = text.size() <= limit && !text.empty();
+    for (char c : text) plain = plain && static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f;
+    return plain ? std::string(text) : quote(text, limit);
+}
 
 // "<subject>: <problem> (<valid>)". `valid` should start with "valid:" or say what to do.
 [[noreturn]] inline void fail(std::string_view subject, std::string_view problem,

@@ -358,9 +358,9 @@ inline bool is_reserved_word(std::string_view s)
 inline void require_name(const std::string& subject, const std::string& name)
 {
     if (!is_identifier(name))
-        fail(subject, "'" + name + "' is not an identifier", "valid: letters, digits and _, not starting with a digit");
+        fail(subject, quote(name) + " is not an identifier", "valid: letters, digits and _, not starting with a digit");
     if (is_reserved_word(name))
-        fail(subject, "'" + name + "' is a keyword or type name of a target language", "valid: any other identifier");
+        fail(subject, quote(name) + " is a keyword or type name of a target language", "valid: any other identifier");
 }
 
 // Computes struct layouts recursively; each named struct is laid out once per rule set.
@@ -380,7 +380,7 @@ public:
         result.rule = rule_;
         result.name = block_.root.name;
         require_name("block name", result.name);
-        if (structs_.count(result.name)) fail("block name", "'" + result.name + "' is also the name of a struct", "valid: a name no struct in block.structs uses");
+        if (structs_.count(result.name)) fail("block name", quote(result.name) + " is also the name of a struct", "valid: a name no struct in block.structs uses");
         lay_out(block_.root, block_.root.name, /*top_level=*/true, result.members, result.size, result.align);
         if (rule_ == rules::hlsl_cbuffer) result.size = round_up(result.size, 16); // a cbuffer is whole registers
         return result;

@@ -105,7 +105,7 @@ private:
             if (!rest.empty() && rest[0] == '[') {
                 const size_t close = rest.find(']');
                 const uint32_t index = parse_index(path, rest.substr(1, close == std::string_view::npos ? close : close - 1));
-                if (!m.is_array()) fail(std::string(path), "'" + m.name + "' is not an array", "valid: index arrays only");
+                if (!m.is_array()) fail(std::string(path), quote(m.name) + " is not an array", "valid: index arrays only");
                 if (index >= t.elements)
                     fail(std::string(path), "index " + std::to_string(index) + " is out of range", "valid: 0.." + std::to_string(t.elements) + " exclusive");
                 t.offset += index * m.array_stride;
@@ -123,7 +123,7 @@ private:
     static uint32_t parse_index(std::string_view path, std::string_view digits)
     {
         if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string_view::npos)
-            fail(std::string(path), "'" + std::string(digits) + "' is not an array index", "valid: a decimal index in [ ]");
+            fail(std::string(path), quote(digits) + " is not an array index", "valid: a decimal index in [ ]");
         return static_cast<uint32_t>(std::stoul(std::string(digits)));
     }
 

@@ -4,6 +4,9 @@
 //   A matrix lists, per axis, the values to combine; expand() returns every
 //   combination as a canonical variant, in a fixed order, without duplicates (axes a
 //   technique ignores collapse: GTAO × four SSAO sample counts is one GTAO variant).
+//   combinations(m) is how many the matrix lists before they collapse (saturating, so a
+//   product of long lists cannot overflow): what a tool bounds before it expands a
+//   user's matrix.
 //   default_matrix() is the set `aogen generate` builds when no variant is named:
 //     SSAO 8/16/32/64 samples × blur bilateral/box/none × full/half, compute;
 //     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/none, compute;
@@ -19,6 +22,10 @@
 
 #include "variant.hpp"
 
+#include <algorithm>
+#include <set>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace aogen {
@@ -49,11 +56,23 @@ inline void append_unique(std::vector<variant>& out, const variant& v)
     out.push_back(c);
 }
 
+// The product of the axes' value counts, at most `cap` + 1 (past the cap it saturates).
+inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40)
+{
+    size_t product = 1;
+    for (size_t n : {m.techniques.size(), m.ssao_samples.size(), m.gtao_slices.size(), m.gtao_steps.size(), m.blur.size(), m.blur_depth.size(),
+                     m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
+                     m.stage.size(), m.range_check.size(), m.output.size()})
+        product = n == 0 ? 0 : std::min(product * std::min(n, cap + 1), cap + 1);
+    return product;
+}
+
 // Every combination, technique-major, in the order the axes' values are listed.
 // Combinations that are invalid (a point-cloud fallback with GTAO) are skipped.
 inline std::vector<variant> expand(const variant_matrix& m)
 {
     std::vector<variant> out;
+    std::set<std::string> seen; // canonical names: append_unique's test, in log time
     variant v;
     for (technique t : m.techniques)
     for (int samples : m.ssao_samples)
@@ -75,7 +94,8 @@ inline std::vector<variant> expand(const variant_matrix& m)
         v.range_check = rc, v.output = o;
         if (pc && t != technique::ssao) continue;
         validate(v);
-        append_unique(out, v);
+        const variant c = canonical(v);
+        if (seen.insert(to_name(c)).second) out.push_back(c);
     }
     return out;
 }

@@ -152,7 +152,7 @@ E value_of(const std::array<enum_name<E>, N>& table, std::string_view name, std:
 {
     for (const auto& entry : table)
         if (same_name(name, entry.name)) return entry.value;
-    fail(subject, "'" + std::string(name) + "' is not a known name", "valid: " + list(table));
+    fail(subject, quote(name) + " is not a known name", "valid: " + list(table));
 }
 
 } // namespace names

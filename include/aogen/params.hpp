@@ -416,7 +416,7 @@ inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
     for (char c : p.kernel)
         if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) well_formed = false;
     if (!well_formed)
-        fail(field(prefix, "kernel"), "'" + p.kernel + "' is not a kernel name",
+        fail(field(prefix, "kernel"), quote(p.kernel) + " is not a kernel name",
              "valid: " + to_string(P::kernel_name_length_range) +
                  " characters of a-z, 0-9 and _, e.g. crytek");
 

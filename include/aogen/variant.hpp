@@ -302,7 +302,7 @@ inline std::string to_name(const variant& input)
 // Parses a name written by to_name (extras in any order, each at most once).
 inline variant variant_from_name(const std::string& name)
 {
-    const std::string subject = "variant name '" + name + "'";
+    const std::string subject = "variant name " + quote(name);
     const std::vector<std::string> t = detail::split(name, '-');
     const char* layout_help =
         "valid: ssao-s<N>|gtao-<slices>x<steps>, half|full, bilateral|box|noblur, gbufworld|gbufview|recon, "
@@ -312,13 +312,13 @@ inline variant variant_from_name(const std::string& name)
     v.tech = names::value_of(technique_names, t[0], subject + " technique");
     if (v.tech == technique::ssao) {
         if (t[1].size() < 2 || t[1][0] != 's' || (v.ssao_samples = detail::parse_count(t[1], 1)) < 0)
-            fail(subject, "'" + t[1] + "' is not a sample count", "valid: s1..s256");
+            fail(subject, quote(t[1]) + " is not a sample count", "valid: s1..s256");
     } else {
         const std::vector<std::string> ss = detail::split(t[1], 'x');
         if (ss.size() != 2 || (v.gtao_slices = detail::parse_count(ss[0])) < 0 || (v.gtao_steps = detail::parse_count(ss[1])) < 0)
-            fail(subject, "'" + t[1] + "' is not slices x steps", "valid: e.g. 2x3, each 1..16");
+            fail(subject, quote(t[1]) + " is not slices x steps", "valid: e.g. 2x3, each 1..16");
     }
-    if (t[2] != "half" && t[2] != "full") fail(subject + " resolution", "'" + t[2] + "' is not a resolution", "valid: half, full");
+    if (t[2] != "half" && t[2] != "full") fail(subject + " resolution", quote(t[2]) + " is not a resolution", "valid: half, full");
     v.half_resolution = t[2] == "half";
     v.blur = names::value_of(detail::blur_tokens, t[3], subject + " blur");
     v.normals = names::value_of(detail::normal_tokens, t[4], subject + " normals");
@@ -329,7 +329,7 @@ inline variant variant_from_name(const std::string& name)
     for (size_t i = 8; i < t.size(); ++i) {
         const std::string& x = t[i];
         const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x;
-        if (std::find(seen.begin(), seen.end(), kind) != seen.end()) fail(subject, "'" + x + "' appears twice", "valid: each extra once");
+        if (std::find(seen.begin(), seen.end(), kind) != seen.end()) fail(subject, quote(x) + " appears twice", "valid: each extra once");
         seen.push_back(kind);
         if (x == "rawdepth") v.blur_depth = bilateral_depth::seed_raw;
         else if (x == "pc") v.point_cloud_fallback = true;
@@ -338,8 +338,8 @@ inline variant variant_from_name(const std::string& name)
         else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
-                fail(subject, "'" + x + "' is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, "'" + x + "' is not a known extra", "valid: rawdepth, pc, rc004, powint, wg<X>x<Y>");
+                fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, wg<X>x<Y>");
     }
     try {
         validate(v);

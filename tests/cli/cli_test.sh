@@ -52,7 +52,7 @@ layout_errors)
   expect_error "unknown rules" "layout rules: 'std150' is not a known name \(valid: std140" layout --rules std150 "$in/input.json"
   expect_error "unknown language" "'glsl2'.*valid: glsl, hlsl" layout --rules std140 --emit glsl2 "$in/input.json"
   expect_error "language without its rules" "cannot express std140.*valid rules: hlsl-cbuffer" layout --rules std140 --emit hlsl "$in/input.json"
-  expect_error "missing file" "nope.json: cannot be read" layout --rules std140 --out out.json "$in/nope.json"
+  expect_error "missing file" "nope.json: does not exist" layout --rules std140 --out out.json "$in/nope.json"
   printf '{"name": "P", "members": [{"name": "a", "type": "flaot"}]}' >"$in/input_type.json"
   expect_error "unknown type" "P.a: unknown type 'flaot'.*valid: float" layout --rules std140 --out out.json "$in/input_type.json"
   printf '{"name": "P", "members": [' >"$in/input_broken.json"

@@ -37,7 +37,7 @@ const char* const cxx = AOGEN_TEST_CXX_COMPILER;
 const char* const cxx = "c++";
 #endif
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; } // paths we make have no quotes
+std::string quote(const std::string& s) { return "'" + s + "'"; } // paths we make have no quotes
 
 std::string read_file(const std::filesystem::path& p)
 {
@@ -105,8 +105,8 @@ TEST_CASE("C++ compiler oracle: declare(language::cpp) compiles and its static_a
         std::ofstream out(source);
         out << unit.str();
     }
-    const std::string command = std::string(cxx) + " -std=c++17 -fsyntax-only -Wall -Wextra " + quoted(source.string()) +
-                                " >" + quoted(log.string()) + " 2>&1";
+    const std::string command = std::string(cxx) + " -std=c++17 -fsyntax-only -Wall -Wextra " + quote(source.string()) +
+                                " >" + quote(log.string()) + " 2>&1";
     const int status = std::system(command.c_str());
     const std::string messages = read_file(log);
     INFO(command << "\n" << messages.substr(0, 6000));

@@ -310,10 +310,11 @@ TEST_CASE("params: every ssao field rejects bad values and accepts its bounds", 
     SECTION("kernel names")
     {
         for (const char* bad : {"", "Crytek", "cry tek", "crytek\n", "hemi-sphere"}) {
+            // (the newline is echoed escaped: "'crytek\x0a'")
             P p;
             p.kernel = bad;
             CHECK_THAT(error_of([&] { aogen::validate(p); }),
-                       Contains("ssao.kernel: '" + std::string(bad) + "' is not a kernel name") &&
+                       Contains("ssao.kernel: " + aogen::quote(bad) + " is not a kernel name") &&
                            Contains("(valid: 1..32 characters of a-z, 0-9 and _, e.g. crytek)"));
         }
         P p;

@@ -96,9 +96,9 @@ PY
   ls "$work/p" | grep -q tmp && fail "a temporary file was left behind"
   ;;
 errors)
-  expect_error "unknown scene" 'built-in scene: "hallway" is not known \(valid: crease, ' --scenes hallway
+  expect_error "unknown scene" "built-in scene: 'hallway' is not known \\(valid: crease, " --scenes hallway
   expect_error "unknown variant" 'ssao-s9000' --variants ssao-s9000-half-box-gbufworld-std-persp-cs
-  expect_error "bad size" '--size: "320by180" is not a size \(valid: WIDTHxHEIGHT' --size 320by180
+  expect_error "bad size" "--size: '320by180' is not a size \\(valid: WIDTHxHEIGHT" --size 320by180
   expect_error "too few rays" '--rays: 100 is not a valid ray count \(valid: the square of an even number' --rays 100
   echo '{"geometry": [' >"$work/broken.json"
   expect_error "malformed scene" 'broken.json: is not valid JSON' --scenes "$work/broken.json"

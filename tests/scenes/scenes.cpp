@@ -147,7 +147,7 @@ TEST_CASE("every built-in scene instantiates and has geometry on screen", "[scen
 TEST_CASE("an unknown built-in scene name lists the valid names", "[scenes][builtin]")
 {
     CHECK_THROWS_WITH(builtin_scene("sphere"), Catch::Contains("sphere_on_plane") && Catch::Contains("plank") &&
-                                                   Catch::Contains("\"sphere\""));
+                                                   Catch::Contains("'sphere'"));
 }
 
 TEST_CASE("a JSON scene parses into the description", "[scenes][json]")

@@ -19,12 +19,39 @@
 
 #include "json_reader.hpp"
 
+#include <algorithm>
+
 #include <aogen/matrix.hpp>
 #include <aogen/selection.hpp>
 
 namespace aogen::tools {
 
+// The most variants one spec (one run of the tools) makes, and the most combinations a
+// matrix of it may list before equal ones collapse: a spec that would make 27 648 is
+// refused at once, naming the count, rather than run for minutes.
+inline constexpr size_t max_spec_variants = 2048;
+inline constexpr size_t max_matrix_combinations = 100000;
+
+// aogen::error unless `count` variants are at most max_spec_variants.
+inline void require_variant_count(const std::string& subject, size_t count)
+{
+    if (count > max_spec_variants)
+        fail(subject, "makes " + std::to_string(count) + " variants",
+             "valid: at most " + std::to_string(max_spec_variants) + " per run; split it into smaller specs");
+}
+
 namespace detail {
+
+// The variants of the matrix at `in`, bounded before and after it is expanded.
+inline std::vector<variant> bounded_expand(const variant_matrix& m, const json_reader& in)
+{
+    if (combinations(m, max_matrix_combinations) > max_matrix_combinations)
+        fail(in.path(), "lists more than " + std::to_string(max_matrix_combinations) + " combinations of its axes",
+             "valid: at most " + std::to_string(max_matrix_combinations) + ", making at most " + std::to_string(max_spec_variants) + " variants");
+    std::vector<variant> out = expand(m);
+    require_variant_count(in.path(), out.size());
+    return out;
+}
 
 // A list of enum names under `key`, each read through `table`.
 template <class E, size_t N>
@@ -52,11 +79,25 @@ inline std::vector<bool> bool_list(const json_reader& in, const char* key, const
     const json_reader list = in.array(key);
     for (size_t i = 0; i < list.size(); ++i) {
         const std::string s = list.at(i).as_string();
-        if (s != on && s != off) fail(list.at(i).path(), "'" + s + "' is not a known name", std::string("valid: ") + on + ", " + off);
+        if (s != on && s != off) fail(list.at(i).path(), quote(s) + " is not a known name", std::string("valid: ") + on + ", " + off);
         values.push_back(s == on);
     }
     if (values.empty()) fail(list.path(), "is empty", "valid: at least one value");
     return values;
+}
+
+// An axis only one technique has, listed in a matrix without that technique, would be
+// ignored without a word: refuse it instead.
+inline void require_axes_used(const json_reader& in, const std::vector<technique>& techniques)
+{
+    const bool ssao = std::find(techniques.begin(), techniques.end(), technique::ssao) != techniques.end();
+    const bool gtao = std::find(techniques.begin(), techniques.end(), technique::gtao) != techniques.end();
+    for (const char* key : {"samples", "point_cloud", "range_check", "output"})
+        if (in.has(key) && !ssao)
+            fail(key_path(in.path(), key), "is an SSAO axis, and this matrix makes no SSAO variant", "valid: leave it out, or add \"ssao\" to technique");
+    for (const char* key : {"slices", "steps"})
+        if (in.has(key) && !gtao)
+            fail(key_path(in.path(), key), "is a GTAO axis, and this matrix makes no GTAO variant", "valid: leave it out, or add \"gtao\" to technique");
 }
 
 inline variant_matrix matrix_from_json(const json_reader& in)
@@ -65,6 +106,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
                   "depth", "projection", "resolution", "stage", "range_check", "output"});
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
+    require_axes_used(in, m.techniques);
     if (in.has("samples")) m.ssao_samples = int_list(in, "samples", 1, 256);
     if (in.has("slices")) m.gtao_slices = int_list(in, "slices", 1, 16);
     if (in.has("steps")) m.gtao_steps = int_list(in, "steps", 1, 16);
@@ -89,6 +131,7 @@ inline std::vector<variant> variants_from_json(const json_reader& in)
     std::vector<variant> out;
     if (in.has("variants")) {
         const json_reader list = in.array("variants");
+        require_variant_count(list.path(), list.size());
         for (size_t i = 0; i < list.size(); ++i) {
             try {
                 append_unique(out, variant_from_name(list.at(i).as_string()));
@@ -99,8 +142,10 @@ inline std::vector<variant> variants_from_json(const json_reader& in)
     }
     if (in.has("matrices")) {
         const json_reader list = in.array("matrices");
-        for (size_t i = 0; i < list.size(); ++i)
-            for (const variant& v : expand(detail::matrix_from_json(list.at(i)))) append_unique(out, v);
+        for (size_t i = 0; i < list.size(); ++i) {
+            for (const variant& v : detail::bounded_expand(detail::matrix_from_json(list.at(i)), list.at(i))) append_unique(out, v);
+            require_variant_count(in.path(), out.size());
+        }
     }
     if (out.empty()) fail(in.path(), "names no variant", "valid: a non-empty \"variants\" or \"matrices\" list");
     return out;

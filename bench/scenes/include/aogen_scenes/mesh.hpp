@@ -101,7 +101,7 @@ namespace detail {
 inline std::vector<unsigned char> read_bytes(const std::string& path, const std::string& subject)
 {
     std::ifstream in(path, std::ios::binary);
-    if (!in) fail(subject, "\"" + path + "\" cannot be read", "valid: an existing, readable mesh file");
+    if (!in) fail(subject, quote(path) + " cannot be read", "valid: an existing, readable mesh file");
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
@@ -132,7 +132,7 @@ inline mesh read_terragen(const std::string& path, const std::string& subject)
 {
     const std::vector<unsigned char> d = read_bytes(path, subject);
     const auto bad = [&](const std::string& why) {
-        fail(subject, "\"" + path + "\" is not a Terragen terrain: " + why, "valid: a .ter file written by Terragen");
+        fail(subject, quote(path) + " is not a Terragen terrain: " + why, "valid: a .ter file written by Terragen");
     };
     if (d.size() < 16 || std::memcmp(d.data(), "TERRAGENTERRAIN ", 16) != 0) bad("no TERRAGENTERRAIN header");
     unsigned xpts = 0, ypts = 0;
@@ -198,7 +198,7 @@ inline mesh read_with_assimp(const std::string& path, const std::string& subject
     const std::string valid = "valid: a file with triangles or polygons (points and lines are dropped) in a format assimp "
                               "reads: .obj, .gltf, .glb, .dae, .ply, .stl, .fbx, ...";
     if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        fail(subject, "\"" + path + "\" cannot be loaded by assimp: " + importer.GetErrorString(), valid);
+        fail(subject, quote(path) + " cannot be loaded by assimp: " + importer.GetErrorString(), valid);
     mesh m;
     m.file = path;
     for (unsigned i = 0; i < s->mNumMeshes; ++i) {
@@ -225,12 +225,12 @@ inline mesh load_mesh(const std::string& path, const mesh_placement& placement, 
     mesh m = detail::ends_with_ter(path) ? detail::read_terragen(path, subject) : detail::read_with_assimp(path, subject);
 #else
     if (!detail::ends_with_ter(path))
-        fail(subject, "\"" + path + "\" needs assimp, which aogen::scenes was built without",
+        fail(subject, quote(path) + " needs assimp, which aogen::scenes was built without",
              "valid: a Terragen .ter file, or rebuild with libassimp-dev installed");
     mesh m = detail::read_terragen(path, subject);
 #endif
     if (m.triangles.empty())
-        fail(subject, "\"" + path + "\" has no triangles", "valid: a mesh file with at least one triangle");
+        fail(subject, quote(path) + " has no triangles", "valid: a mesh file with at least one triangle");
     for (dvec3& v : m.vertices) v = placement.apply(v);
     return m;
 }

@@ -27,12 +27,14 @@
 //
 // JSON FORMAT (every key optional unless marked; unknown keys are errors)
 //   {
-//     "name": "my scene",
+//     "name": "my scene",                           (not empty; default: the file's stem)
 //     "geometry": [                                              (required, ≥ 1 entry)
 //       {"type": "plane",  "point": [x,y,z], "normal": [x,y,z], "half_extent": 1e4},
+//                                                                 (normal not zero; half_extent > 0)
 //       {"type": "box",    "min": [x,y,z], "max": [x,y,z]},       (axis-aligned, min < max)
 //       {"type": "sphere", "centre": [x,y,z], "radius": r},       (r > 0)
 //       {"type": "quad",   "corner": [x,y,z], "e1": [x,y,z], "e2": [x,y,z]},
+//                                                                 (e1, e2 not parallel)
 //       {"type": "mesh",   "file": "model.glb",                   (required; relative to the
 //                          "scale": 1, "rotate_x_degrees": 0,      scene file's directory)
 //                          "translate": [0, 0, 0]},               world = translate + R_x·(scale·v)
@@ -52,6 +54,8 @@
 //     "renderer": {"normals": "world" | "view" | "none", "point_cloud": false,
 //                  "depth_buffer": "d32_sfloat" | "d24_unorm" | "d16_unorm"}  (default d32_sfloat)
 //   }
+//   Every coordinate and length is a finite number of magnitude at most 1e15 (max_coordinate):
+//   beyond that, float geometry in the tracer and the GPU cannot tell points apart.
 //   Meshes are read by load_mesh (mesh.hpp): any format assimp reads, and Terragen .ter.
 //   Points become camera-facing square splats when the scene is built (points.hpp), so they
 //   follow the camera; a point-cloud renderer has no normals ("normals": "none").
@@ -65,6 +69,7 @@
 #include <aogen/error.hpp>
 #include <aogen/math.hpp>
 #include <aogen_truth/tracer.hpp>
+#include <aogen_tools/files.hpp>
 #include <aogen_tools/json_reader.hpp>
 
 #include <algorithm>
@@ -227,21 +232,53 @@ inline void validate(const scene& s, const std::string& where)
 
 // --- JSON ---------------------------------------------------------------------------
 
+// The largest coordinate or length a scene file may give (see JSON FORMAT).
+inline constexpr double max_coordinate = 1e15;
+
 namespace detail {
 
-// An [x, y, z] value. json_reader cannot ask whether an array element is an array, so
-// nlohmann's type_error (indexing an object) stands for "not an array".
+// An [x, y, z] value, each component within ±max_coordinate. json_reader cannot ask
+// whether an array element is an array, so nlohmann's type_error (indexing an object)
+// stands for "not an array".
 inline dvec3 as_vec3(const tools::json_reader& a)
 {
     if (a.size() != 3) fail(a.path(), "has " + std::to_string(a.size()) + " entries", "valid: [x, y, z]");
+    dvec3 v;
     try {
-        return {a.at(0).as_number(), a.at(1).as_number(), a.at(2).as_number()};
+        v = {a.at(0).as_number(), a.at(1).as_number(), a.at(2).as_number()};
     } catch (const nlohmann::json::type_error&) {
         fail(a.path(), "is not an array", "valid: [x, y, z]");
     }
+    for (double c : {v.x, v.y, v.z}) require_finite_range(a.path(), c, -max_coordinate, max_coordinate);
+    return v;
 }
 
 inline dvec3 read_vec3(const tools::json_reader& r, const char* key) { return as_vec3(r.array(key)); }
+
+// A length within (0, max_coordinate].
+inline double read_length(const tools::json_reader& g, const char* key)
+{
+    const double x = g.number(key);
+    require_finite_above(g.path() + "." + key, x, 0, max_coordinate);
+    return x;
+}
+
+// A direction that is not zero (nor so small its square underflows).
+inline dvec3 read_direction(const tools::json_reader& g, const char* key)
+{
+    const dvec3 d = read_vec3(g, key);
+    if (!(truth::dot(d, d) > 1e-200)) fail(g.path() + "." + key, "is the zero vector", "valid: a non-zero direction");
+    return d;
+}
+
+// Two edge vectors spanning a parallelogram: neither zero, not parallel.
+inline void require_spanning(const tools::json_reader& g, const dvec3& e1, const dvec3& e2)
+{
+    const dvec3 n = truth::cross(e1, e2);
+    const double scale = std::sqrt(truth::dot(e1, e1) * truth::dot(e2, e2));
+    if (!(std::sqrt(truth::dot(n, n)) > 1e-9 * scale) || !(scale > 0))
+        fail(g.path(), "e1 and e2 are parallel or zero: the quad has no area", "valid: two edges that are not parallel");
+}
 
 // A mesh file named in `source` (a scene file): relative paths start at its directory.
 inline std::string resolve_path(const std::string& file, const std::string& source)
@@ -291,7 +328,7 @@ E read_enum(const tools::json_reader& r, const char* key, std::initializer_list<
         if (v == name) return e;
         valid += (valid.empty() ? "" : ", ") + std::string(name);
     }
-    fail(f.path(), "\"" + v + "\" is not " + what, "valid: " + valid);
+    fail(f.path(), quote(v) + " is not " + what, "valid: " + valid);
 }
 
 } // namespace detail
@@ -303,7 +340,9 @@ inline scene read_scene(const std::string& text, const std::string& source)
     const tools::json_reader root(doc, source);
     root.only_keys({"name", "geometry", "camera", "ao_radius", "renderer"});
     scene s;
-    if (root.has("name")) s.name = root.string("name");
+    // The report's tables and strip file are named by it: never empty.
+    s.name = root.has("name") ? root.string("name") : std::filesystem::path(source).stem().string();
+    if (s.name.empty()) fail(root.path() + ".name", "is empty", "valid: a name for the scene, e.g. \"box on a floor\"");
 
     const tools::json_reader geo = root.array("geometry");
     for (size_t i = 0; i < geo.size(); ++i) {
@@ -312,24 +351,29 @@ inline scene read_scene(const std::string& text, const std::string& source)
         const std::string type = g.string("type");
         if (type == "plane") {
             g.only_keys({"type", "point", "normal", "half_extent"});
-            plane p{detail::read_vec3(g, "point"), detail::read_vec3(g, "normal")};
-            if (g.has("half_extent")) p.half_extent = g.number("half_extent");
+            plane p{detail::read_vec3(g, "point"), detail::read_direction(g, "normal")};
+            if (g.has("half_extent")) p.half_extent = detail::read_length(g, "half_extent");
             s.planes.push_back(p);
         } else if (type == "box") {
             g.only_keys({"type", "min", "max"});
-            s.boxes.push_back({detail::read_vec3(g, "min"), detail::read_vec3(g, "max")});
+            const box b{detail::read_vec3(g, "min"), detail::read_vec3(g, "max")};
+            if (!(b.lo.x < b.hi.x && b.lo.y < b.hi.y && b.lo.z < b.hi.z))
+                fail(g.path(), "min is not below max on every axis", "valid: min < max componentwise");
+            s.boxes.push_back(b);
         } else if (type == "sphere") {
             g.only_keys({"type", "centre", "radius"});
-            s.spheres.push_back({detail::read_vec3(g, "centre"), g.number("radius")});
+            s.spheres.push_back({detail::read_vec3(g, "centre"), detail::read_length(g, "radius")});
         } else if (type == "quad") {
             g.only_keys({"type", "corner", "e1", "e2"});
-            s.quads.push_back({detail::read_vec3(g, "corner"), detail::read_vec3(g, "e1"), detail::read_vec3(g, "e2")});
+            const quad q{detail::read_vec3(g, "corner"), detail::read_vec3(g, "e1"), detail::read_vec3(g, "e2")};
+            detail::require_spanning(g, q.e1, q.e2);
+            s.quads.push_back(q);
         } else if (type == "mesh") {
             s.meshes.push_back(detail::read_mesh(g, source));
         } else if (type == "points") {
             s.point_sets.push_back(detail::read_points(g));
         } else {
-            fail(g.path() + ".type", "\"" + type + "\" is not a geometry type", "valid: plane, box, sphere, quad, mesh, points");
+            fail(g.path() + ".type", quote(type) + " is not a geometry type", "valid: plane, box, sphere, quad, mesh, points");
         }
     }
 
@@ -365,7 +409,7 @@ inline scene read_scene(const std::string& text, const std::string& source)
         if (c.has("target")) cam.target = detail::read_vec3(c, "target");
         if (c.has("up")) cam.up = detail::read_vec3(c, "up");
     }
-    if (root.has("ao_radius")) s.ao_radius = root.number("ao_radius");
+    if (root.has("ao_radius")) s.ao_radius = detail::read_length(root, "ao_radius");
     if (root.has("renderer")) {
         const tools::json_reader r = root.field("renderer");
         r.only_keys({"normals", "point_cloud", "depth_buffer"});
@@ -385,14 +429,7 @@ inline scene read_scene(const std::string& text, const std::string& source)
     return s;
 }
 
-inline scene load_scene(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot be read", "valid: a readable scene JSON file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return read_scene(text.str(), path);
-}
+inline scene load_scene(const std::string& path) { return read_scene(tools::read_file(path), path); }
 
 // --- built-in scenes ----------------------------------------------------------------
 // World z is up; the floor is z = 0. Default resolution 160×90, 60° vertical field of view.
@@ -554,7 +591,7 @@ inline scene builtin_scene(const std::string& name)
     } else {
         std::string valid;
         for (const std::string& n : builtin_scene_names()) valid += (valid.empty() ? "" : ", ") + n;
-        fail("built-in scene", "\"" + name + "\" is not known", "valid: " + valid);
+        fail("built-in scene", quote(name) + " is not known", "valid: " + valid);
     }
     validate(s, "built-in scene " + name);
     return s;
