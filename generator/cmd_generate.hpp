@@ -16,6 +16,7 @@
 #pragma once
 
 #include <aogen_tools/files.hpp>
+#include <aogen_tools/options.hpp>
 #include "struct_json.hpp"
 #include <aogen_tools/variant_spec.hpp>
 
@@ -241,10 +242,10 @@ struct generate_command {
     void add_to(CLI::App& app)
     {
         CLI::App* sub = app.add_subcommand("generate", "Generate shader variants for every target, a manifest and a C++ header");
-        sub->add_option("--variants", spec, "A variant spec (JSON: \"variants\" names and/or \"matrices\")");
-        sub->add_option("--scene", scene, "What the renderer has and needs (JSON); selects each variant's features");
+        sub->add_option("--variants", spec, "A variant spec (JSON: \"variants\" names and/or \"matrices\")")->check(not_empty("a variant spec file"));
+        sub->add_option("--scene", scene, "What the renderer has and needs (JSON); selects each variant's features")->check(not_empty("a scene file"));
         sub->add_option("--targets", targets, "Comma-separated: " + compile::target_list())->capture_default_str();
-        sub->add_option("--out", out, "Output directory")->required();
+        sub->add_option("--out", out, "Output directory")->required()->check(not_empty("a folder path"));
         sub->add_flag("--quiet", quiet, "No progress on stderr");
         sub->add_option("NAME", variant_names, "Variant names (see aogen list); none and no --variants: the default matrix");
         sub->callback([this] { run(); });

@@ -5,6 +5,7 @@
 
 #include "format.hpp"
 #include <aogen_tools/files.hpp>
+#include <aogen_tools/options.hpp>
 
 #include <aogen/kernel.hpp>
 
@@ -28,11 +29,11 @@ struct kernel_command {
         CLI::App* sub = app.add_subcommand("kernel", "Generate a hemisphere sample kernel (vec4: xyz, w = 0)");
         sub->add_option("--kind", kind, "Distribution: crytek, cosine, hammersley")->capture_default_str();
         sub->add_option("--scale", scale, "Length law: crytek (0.1 + 0.9 (i/N)^2) or none")->capture_default_str();
-        sub->add_option("--count", count, "Samples, 1..256")->capture_default_str();
-        sub->add_option("--seed", seed, "Seed; the same seed gives the same bytes")->capture_default_str();
+        sub->add_option("--count", count, "Samples, 1..256")->capture_default_str()->check(integer_in(1, 256));
+        sub->add_option("--seed", seed, "Seed; the same seed gives the same bytes")->capture_default_str()->check(integer_in(0, UINT64_MAX));
         sub->add_option("--format", format, "json, cpp, glsl, wgsl or bin (RGBA32F bytes)")->capture_default_str();
-        sub->add_option("--name", name, "Constant name in cpp/glsl/wgsl output")->capture_default_str();
-        sub->add_option("--out", out, "Write to this file instead of standard output");
+        sub->add_option("--name", name, "Constant name in cpp/glsl/wgsl output")->capture_default_str()->check(declaration_name());
+        sub->add_option("--out", out, "Write to this file instead of standard output")->check(not_empty("a file path, or - for standard output"));
         sub->callback([this] { run(); });
     }
 

@@ -5,6 +5,7 @@
 
 #include "format.hpp"
 #include <aogen_tools/files.hpp>
+#include <aogen_tools/options.hpp>
 
 #include <aogen/noise.hpp>
 
@@ -26,13 +27,13 @@ struct noise_command {
     void add_to(CLI::App& app)
     {
         CLI::App* sub = app.add_subcommand("noise", "Generate an N x N tile of rotation vectors (cos, sin, 0, 1)");
-        sub->add_option("--size", size, "Tile side in texels, 1..64")->capture_default_str();
-        sub->add_option("--seed", seed, "Seed; the same seed gives the same bytes")->capture_default_str();
+        sub->add_option("--size", size, "Tile side in texels, 1..64")->capture_default_str()->check(integer_in(1, 64));
+        sub->add_option("--seed", seed, "Seed; the same seed gives the same bytes")->capture_default_str()->check(integer_in(0, UINT64_MAX));
         sub->add_option("--pattern", pattern, "random (the seeds') or r2 (stratified angles)")->capture_default_str();
         sub->add_option("--encoding", encoding, "rgba32f, rgba16f, rg16f, rgba8_unorm, rgba8_snorm")->capture_default_str();
         sub->add_option("--format", format, "json, cpp or bin (the encoded texels)")->capture_default_str();
-        sub->add_option("--name", name, "Array name in cpp output")->capture_default_str();
-        sub->add_option("--out", out, "Write to this file instead of standard output");
+        sub->add_option("--name", name, "Array name in cpp output")->capture_default_str()->check(declaration_name());
+        sub->add_option("--out", out, "Write to this file instead of standard output")->check(not_empty("a file path, or - for standard output"));
         sub->callback([this] { run(); });
     }
 

@@ -15,6 +15,7 @@
 
 #include "format.hpp"
 #include <aogen_tools/files.hpp>
+#include <aogen_tools/options.hpp>
 #include "struct_json.hpp"
 
 #include <aogen/declare.hpp>
@@ -167,7 +168,7 @@ struct seeds_command {
     void add_to(CLI::App& app)
     {
         CLI::App* sub = app.add_subcommand("seeds", "Write the kernels, noise tiles and uniform blocks of the seeds' presets");
-        sub->add_option("--out", out, "Output directory")->capture_default_str();
+        sub->add_option("--out", out, "Output directory")->capture_default_str()->check(not_empty("a folder path"));
         sub->callback([this] { run(); });
     }
 

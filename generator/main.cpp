@@ -18,7 +18,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
+#include <string>
+#include <vector>
 
 int main(int argc, char** argv)
 {
@@ -39,7 +42,16 @@ int main(int argc, char** argv)
     list.add_to(app);
     generate.add_to(app);
 
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) commands.push_back(sub->get_name());
     try {
+        // CLI11 answers an unknown or a missing command with "A subcommand is required".
+        const std::string first = argc > 1 ? argv[1] : "";
+        if (first.empty() || (first[0] != '-' && std::find(commands.begin(), commands.end(), first) == commands.end())) {
+            std::string valid;
+            for (const std::string& c : commands) valid += (valid.empty() ? "" : ", ") + c;
+            aogen::fail("command", first.empty() ? "is missing" : aogen::quote(first) + " is not a command", "valid: " + valid + "; see aogen --help");
+        }
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
         std::cout << app.help();
@@ -48,7 +60,8 @@ int main(int argc, char** argv)
         std::cout << app.help("", CLI::AppFormatMode::All);
         return 0;
     } catch (const CLI::ParseError& e) {
-        std::cerr << "aogen: " << e.what() << " (see aogen --help)\n";
+        const std::string what = e.what(); // ours say what is valid; CLI11's own do not
+        std::cerr << "aogen: " << what << (what.find("(valid:") == std::string::npos ? " (see aogen --help)" : "") << "\n";
         return 2;
     } catch (const aogen::error& e) {
         std::cerr << "aogen: " << e.what() << "\n";

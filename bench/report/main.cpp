@@ -16,6 +16,7 @@
 
 #include <aogen/matrix.hpp>
 #include <aogen_tools/files.hpp>
+#include <aogen_tools/options.hpp>
 #include <aogen_tools/variant_spec.hpp>
 
 #include <CLI/CLI.hpp>
@@ -215,20 +216,23 @@ int main(int argc, char** argv)
     int rays = 4096;
     aogen::vulkan::timing_options timing = aogen_report::report_settings{}.timing;
     bool validation = false, no_saving = false, no_floor = false;
-    app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)");
-    app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)");
+    app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)")
+        ->check(aogen::tools::not_empty("scene names or files"));
+    app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)")
+        ->check(aogen::tools::not_empty("a spec file or variant names"));
     app.add_option("--size", size, "every scene's resolution, WIDTHxHEIGHT")->capture_default_str();
-    app.add_option("--rays", rays, "reference rays per pixel: the square of an even number >= 32")->capture_default_str();
+    app.add_option("--rays", rays, "reference rays per pixel: the square of an even number >= 32")->capture_default_str()
+        ->check(aogen::tools::integer_in(1, 65536)); // grid_for_rays says which counts work
     app.add_option("--rounds", timing.rounds, "timing rounds per scene: every chain's iterations, interleaved, in one submission")
-        ->capture_default_str()->check(CLI::Range(1, 1000));
+        ->capture_default_str()->check(aogen::tools::integer_in(1, 1000));
     app.add_option("--iterations", timing.iterations, "back-to-back iterations of every chain in each round (the most, under --budget-ms)")
-        ->capture_default_str()->check(CLI::Range(1, 1000));
+        ->capture_default_str()->check(aogen::tools::integer_in(1, 1000));
     app.add_option("--budget-ms", timing.budget_ms, "fewer iterations where a scene's rounds would take longer than this (0: always --iterations)")
-        ->capture_default_str()->check(CLI::Range(0.0, 3600000.0));
+        ->capture_default_str()->check(aogen::tools::number_in(0.0, 3600000.0));
     app.add_option("--warmup-ms", timing.warmup_ms, "continuous untimed GPU work before each scene's timing, in ms")
-        ->capture_default_str()->check(CLI::Range(0.0, 60000.0));
+        ->capture_default_str()->check(aogen::tools::number_in(0.0, 60000.0));
     app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");
-    app.add_option("--out", out, "the report folder")->capture_default_str();
+    app.add_option("--out", out, "the report folder")->capture_default_str()->check(aogen::tools::not_empty("a folder path"));
     app.add_option("--plot-script", plot_script, "the error-against-time plot script")->capture_default_str();
     app.add_option("--python", python, "the Python that runs it (with matplotlib)")->capture_default_str();
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
@@ -236,8 +240,12 @@ int main(int argc, char** argv)
     app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch floor");
     try {
         app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+    } catch (const CLI::CallForHelp&) {
+        std::cout << app.help();
+        return 0;
+    } catch (const CLI::ParseError& e) { // one line, as every other error: CLI11's exit() prints two
+        std::cerr << "aogen_report: " << e.what() << "\n";
+        return 2;
     }
 
     const auto start = std::chrono::steady_clock::now();

@@ -85,7 +85,7 @@ inline std::string quote(std::string_view text, size_t limit = 80)
 // most `limit` characters (a file name reads best bare), quote()d otherwise.
 inline std::string printable(std::string_view text, size_t limit = 200)
 {
-    bool plain = text.size() <= limit && !text.empty();
+    bool plain = text.size() <= limit;
     for (char c : text) plain = plain && static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f;
     return plain ? std::string(text) : quote(text, limit);
 }

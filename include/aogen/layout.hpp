@@ -355,12 +355,25 @@ inline bool is_reserved_word(std::string_view s)
            parse_value_type(s).has_value();
 }
 
+// The longest name a declaration may use: glslang and the other shader compilers take
+// identifiers of up to 1024 characters.
+inline constexpr size_t max_identifier_length = 1024;
+
+// What is wrong with `name` as a declaration's name, as "problem (valid: ...)"; "" if nothing.
+inline std::string name_problem(const std::string& name)
+{
+    if (name.size() > max_identifier_length)
+        return "is a name of " + std::to_string(name.size()) + " characters (valid: at most " + std::to_string(max_identifier_length) +
+               ", what shader compilers accept)";
+    if (!is_identifier(name)) return quote(name) + " is not an identifier (valid: letters, digits and _, not starting with a digit)";
+    if (is_reserved_word(name)) return quote(name) + " is a keyword or type name of a target language (valid: any other identifier)";
+    return "";
+}
+
 inline void require_name(const std::string& subject, const std::string& name)
 {
-    if (!is_identifier(name))
-        fail(subject, quote(name) + " is not an identifier", "valid: letters, digits and _, not starting with a digit");
-    if (is_reserved_word(name))
-        fail(subject, quote(name) + " is a keyword or type name of a target language", "valid: any other identifier");
+    const std::string problem = name_problem(name);
+    if (!problem.empty()) throw error(subject + ": " + problem);
 }
 
 // Computes struct layouts recursively; each named struct is laid out once per rule set.
@@ -383,6 +396,12 @@ public:
         if (structs_.count(result.name)) fail("block name", quote(result.name) + " is also the name of a struct", "valid: a name no struct in block.structs uses");
         lay_out(block_.root, block_.root.name, /*top_level=*/true, result.members, result.size, result.align);
         if (rule_ == rules::hlsl_cbuffer) result.size = round_up(result.size, 16); // a cbuffer is whole registers
+        // Structs no member uses are checked too: an unknown type in one is a mistake
+        // that would surface the day a member uses it.
+        for (const struct_desc& s : block_.structs) {
+            std::vector<member_layout> unused;
+            describe_struct(s.name, "struct " + s.name, unused);
+        }
         return result;
     }
 
@@ -399,7 +418,7 @@ private:
         std::set<std::string> names;
         for (size_t i = 0; i < s.members.size(); ++i) {
             const member_desc& d = s.members[i];
-            const std::string member_path = path + "." + d.name;
+            const std::string member_path = path + "." + printable(d.name, 64);
             require_name(member_path, d.name);
             if (!names.insert(d.name).second) fail(member_path, "is declared twice", "valid: unique member names");
             if (d.count == 0u) check_runtime_array(member_path, top_level, i + 1 == s.members.size());
@@ -498,7 +517,7 @@ private:
         if (found == structs_.end()) {
             std::string valid = "valid: float, int, uint, vec2..4, ivec2..4, uvec2..4, mat2..4, matCxR";
             for (const auto& entry : structs_) valid += ", " + entry.first;
-            fail(path, "unknown type '" + type + "'", valid);
+            fail(path, "unknown type " + quote(type), valid);
         }
         if (std::find(open_.begin(), open_.end(), type) != open_.end())
             fail(path, "struct " + type + " contains itself", "valid: structs nest without cycles");

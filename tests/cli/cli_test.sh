@@ -38,7 +38,7 @@ help)
   for sub in "" layout kernel noise seeds list generate; do
     check "aogen $sub --help" bash -c "'$aogen' $sub --help | grep -q Usage"
   done
-  expect_error "no command" "A subcommand is required|subcommand"
+  expect_error "no command" "command: is missing \\(valid: layout, kernel"
   ;;
 layout_golden)
   check "std140 JSON" diff -u "$golden/params.std140.json" <("$aogen" layout --rules std140 "$golden/params.json")
@@ -80,8 +80,8 @@ kernel)
   check "cpp constant compiles" c++ -std=c++17 -fsyntax-only "$work/k.cpp"
   "$aogen" kernel --format json --count 5 >"$work/k.json"
   check "json holds 5 samples" python3 -c "import json; assert len(json.load(open('$work/k.json'))['samples']) == 5"
-  expect_error "count 0" "kernel count: 0 is out of range \(valid: 1..256\)" kernel --count 0 --format bin --out k.bin
-  expect_error "count 257" "kernel count: 257 is out of range \(valid: 1..256\)" kernel --count 257
+  expect_error "count 0" "--count: '0' is out of range \(valid: 1..256\)" kernel --count 0 --format bin --out k.bin
+  expect_error "count 257" "--count: '257' is out of range \(valid: 1..256\)" kernel --count 257
   expect_error "unknown kind" "kernel distribution.*valid: crytek, cosine, hammersley" kernel --kind blue
   expect_error "unknown format" "--format: 'yaml'.*valid: json, cpp, glsl, wgsl, bin" kernel --format yaml --out k.txt
   ;;
@@ -95,7 +95,7 @@ b = open('$work/n.bin', 'rb').read()
 assert all(b[i + 2] == 128 and b[i + 3] == 255 for i in range(0, 64, 4)), b"
   "$aogen" noise --format cpp --pattern r2 >"$work/n.cpp"
   check "cpp array compiles" c++ -std=c++17 -fsyntax-only "$work/n.cpp"
-  expect_error "size 0" "noise size: 0 is out of range \(valid: 1..64\)" noise --size 0
+  expect_error "size 0" "--size: '0' is out of range \(valid: 1..64\)" noise --size 0
   expect_error "unknown encoding" "rgba8_srgb.*valid: rgba32f" noise --encoding rgba8_srgb --out n.bin
   ;;
 seeds)

@@ -498,7 +498,17 @@ inline report_data run_report(const report_settings& settings)
     if (settings.variants.empty()) aogen::fail("report", "no variants", "valid: at least one variant");
     report_data out;
     out.grid = settings.grid, out.timing = settings.timing, out.fetch_floor = settings.fetch_floor;
-    // First: a missing device fails before any compiling or tracing.
+    // Every scene can be scored, checked before anything is compiled or traced: its radius
+    // makes valid settings and its camera sees some of its geometry (an error over no
+    // pixel is not a score).
+    for (aogen::scenes::scene s : settings.scenes) {
+        require_radius_works(s);
+        if (settings.width > 0) s.camera.width = settings.width, s.camera.height = settings.height;
+        if (!aogen::scenes::shows_geometry(s, *aogen::scenes::make_tracer(s)))
+            aogen::fail("scene " + aogen::quote(s.name), "shows no geometry: no pixel's ray hits anything between near and far",
+                        "valid: geometry in front of the camera");
+    }
+    // Then: a missing device fails before any compiling or tracing.
     aogen::vulkan::context ctx(settings.device);
     out.device = ctx.device_name();
     clock_monitor clocks(ctx.cpu() ? "" : ctx.device_name());

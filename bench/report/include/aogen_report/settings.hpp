@@ -4,6 +4,7 @@
 //
 //     std::string why = aogen_report::cannot_run(v, scene);        // "" when it can
 //     aogen::vulkan::chain_settings s = aogen_report::default_settings(v, scene);
+//     aogen_report::require_radius_works(scene);                     // before any work
 //
 // Defaults are the seed presets (aogen/params.hpp): Taos' SSAO for the strength output
 // form and Unique Engine's for power/intensity, Taos' GTAO (strength 2) — with every
@@ -17,6 +18,7 @@
 #include <aogen/vulkan/chain.hpp>
 #include <aogen_scenes/scene.hpp>
 
+#include <algorithm>
 #include <string>
 
 namespace aogen_report {
@@ -39,6 +41,30 @@ inline std::string cannot_run(const aogen::variant& v, const aogen::scenes::scen
     if (v.normals != aogen::normal_source::reconstructed && s.renderer.normals == aogen::scenes::normal_space::none)
         return "the variant reads a normal buffer; the scene's renderer has none";
     return "";
+}
+
+// The AO radii R for which every setting default_settings derives from R lies in its
+// parameter's range (params.hpp): the SSAO and GTAO radius R itself, SSAO's bias (a fixed
+// fraction of R) and the linear blur's sharpness (10 per unit at R = 1, so 10 / R).
+struct radius_range {
+    double lo, hi;
+};
+inline radius_range ao_radius_range()
+{
+    const double sharpness = aogen::blur_params{}.linear_sharpness;          // at R = 1
+    const double bias_ratio = aogen::presets::taos_ssao().ssao.bias / aogen::presets::taos_ssao().ssao.radius;
+    double hi = std::min<double>(aogen::ssao_params::radius_range.hi, aogen::gtao_params::radius_range.hi);
+    hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / bias_ratio);
+    return {sharpness / double(aogen::blur_params::linear_sharpness_range.hi), hi};
+}
+
+// aogen::error naming the scene's ao_radius unless the default settings can be made from it.
+inline void require_radius_works(const aogen::scenes::scene& s)
+{
+    const radius_range r = ao_radius_range();
+    if (!(s.ao_radius >= r.lo && s.ao_radius <= r.hi))
+        aogen::fail("scene " + aogen::quote(s.name) + ": ao_radius", aogen::format_number(s.ao_radius) + " is outside what the variants' settings take",
+                    "valid: " + aogen::format_number(r.lo) + ".." + aogen::format_number(r.hi) + " world units");
 }
 
 inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, const aogen::scenes::scene& s)

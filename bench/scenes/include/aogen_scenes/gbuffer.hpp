@@ -4,6 +4,7 @@
 //   render_gbuffer(scene, opts)  one primary ray per pixel through the pixel centre; per pixel
 //                                the raw depth a GPU would write, the normal and the world-
 //                                space hit position (for the ground truth).
+//   shows_geometry(scene, t)     whether any pixel's ray hits anything (first hit ends it)
 //   to_gbuffer<G>(g)             G{width, height, depth, normals}: aogen::vulkan::gbuffer
 //                                (this header does not include Vulkan).
 //   stored_depth(d, format)      the value a shader reads back after the GPU stored d in a
@@ -75,6 +76,52 @@ struct gbuffer_options {
     normal_space normals = normal_space::world;    // used when use_scene_normals is false
 };
 
+// The camera ray through pixel (x, y)'s centre: world origin and direction, and the same
+// in view space (dir_v.z = −1, so the hit's t is its view distance).
+struct primary_ray {
+    dvec3 org, dir, org_v, dir_v;
+};
+
+// The primary rays of a camera, pixel by pixel, as render_gbuffer casts them.
+class primary_rays {
+public:
+    explicit primary_rays(const camera& c) : c_(c), aspect_(double(c.width) / c.height)
+    {
+        c.basis(right_, up_, back_);
+        const bool infinite = c.projection == projection_kind::perspective && c.depth == depth_convention::reversed_infinite;
+        tfar_ = infinite ? std::numeric_limits<double>::infinity() : double(c.far);
+    }
+
+    double tnear() const { return c_.near; } // geometry nearer than near is clipped
+    double tfar() const { return tfar_; }    // and beyond far, but for reversed_infinite
+
+    primary_ray at(int x, int y) const
+    {
+        const double ndc_x = 2.0 * (x + 0.5) / c_.width - 1.0;
+        const double ndc_y = 1.0 - 2.0 * (y + 0.5) / c_.height;
+        primary_ray r;
+        if (c_.projection == projection_kind::perspective) {
+            r.dir_v = {ndc_x * aspect_ * c_.tan_half_fov_y, ndc_y * c_.tan_half_fov_y, -1};
+        } else {
+            r.dir_v = {0, 0, -1};
+            r.org_v = {c_.left + (ndc_x + 1) * 0.5 * (double(c_.right) - c_.left), c_.bottom + (ndc_y + 1) * 0.5 * (double(c_.top) - c_.bottom), 0};
+        }
+        r.org = c_.eye + world(r.org_v);
+        r.dir = world(r.dir_v);
+        return r;
+    }
+
+    // A view-space vector in world space, and back.
+    dvec3 world(dvec3 v) const { return v.x * right_ + v.y * up_ + v.z * back_; }
+    dvec3 view(dvec3 w) const { return {truth::dot(w, right_), truth::dot(w, up_), truth::dot(w, back_)}; }
+
+private:
+    const camera& c_;
+    double aspect_;
+    dvec3 right_, up_, back_;
+    double tfar_;
+};
+
 // Ray-casts the G-buffer of `s` into an already built tracer `t` (make_tracer(s)).
 inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuffer_options& o = {})
 {
@@ -90,32 +137,15 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
     g.hit.assign(n, 0);
     g.geometry.assign(n, -1);
 
-    dvec3 sb, ub, bb;
-    c.basis(sb, ub, bb);
+    const primary_rays rays(c);
     const mat4 proj = c.projection_matrix();
-    const bool persp = c.projection == projection_kind::perspective;
-    const double aspect = double(W) / H;
-    const double tfar = (persp && c.depth == depth_convention::reversed_infinite) ? std::numeric_limits<double>::infinity()
-                                                                                : double(c.far);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
-            const double ndc_x = 2.0 * (x + 0.5) / W - 1.0;
-            const double ndc_y = 1.0 - 2.0 * (y + 0.5) / H;
-            dvec3 dir_v, org_v; // view space; dir_v.z = −1 so t is the view distance
-            if (persp) {
-                dir_v = {ndc_x * aspect * c.tan_half_fov_y, ndc_y * c.tan_half_fov_y, -1};
-            } else {
-                dir_v = {0, 0, -1};
-                org_v = {c.left + (ndc_x + 1) * 0.5 * (double(c.right) - c.left),
-                         c.bottom + (ndc_y + 1) * 0.5 * (double(c.top) - c.bottom), 0};
-            }
-            const auto to_world = [&](dvec3 v) { return v.x * sb + v.y * ub + v.z * bb; };
-            const dvec3 org = c.eye + to_world(org_v);
-            const dvec3 dir = to_world(dir_v);
-            const truth::scene::hit h = t.intersect(org, dir, c.near, tfar);
+            const primary_ray r = rays.at(x, y);
+            const truth::scene::hit h = t.intersect(r.org, r.dir, rays.tnear(), rays.tfar());
             if (!h.found) continue;
             const size_t i = size_t(y) * W + x;
-            const dvec3 v = org_v + h.t * dir_v; // view-space hit, z = −t
+            const dvec3 v = r.org_v + h.t * r.dir_v; // view-space hit, z = −t
             const vec4 clip = proj * vec4{float(v.x), float(v.y), float(v.z), 1.0f};
             g.depth[i] = stored_depth(clip.z / clip.w, s.renderer.depth_buffer);
             g.position[3 * i] = h.position.x, g.position[3 * i + 1] = h.position.y, g.position[3 * i + 2] = h.position.z;
@@ -123,15 +153,27 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
             g.geometry[i] = int(h.geometry);
             if (g.normals_space != normal_space::none) {
                 dvec3 nw = truth::normalize(h.normal);
-                if (truth::dot(nw, dir) > 0) nw = -1.0 * nw;
-                const dvec3 nn = g.normals_space == normal_space::world
-                                     ? nw
-                                     : dvec3{truth::dot(nw, sb), truth::dot(nw, ub), truth::dot(nw, bb)};
+                if (truth::dot(nw, r.dir) > 0) nw = -1.0 * nw;
+                const dvec3 nn = g.normals_space == normal_space::world ? nw : rays.view(nw);
                 g.normals[4 * i] = float(nn.x), g.normals[4 * i + 1] = float(nn.y), g.normals[4 * i + 2] = float(nn.z);
                 g.normals[4 * i + 3] = 1.0f;
             }
         }
     return g;
+}
+
+// Whether any pixel of `s`'s camera sees geometry of tracer `t` (the first hit ends the
+// search): a scene that shows nothing has no error to score, and a report refuses it
+// before it traces anything.
+inline bool shows_geometry(const scene& s, const truth::scene& t)
+{
+    const primary_rays rays(s.camera);
+    for (int y = 0; y < s.camera.height; ++y)
+        for (int x = 0; x < s.camera.width; ++x) {
+            const primary_ray r = rays.at(x, y);
+            if (t.intersect(r.org, r.dir, rays.tnear(), rays.tfar()).found) return true;
+        }
+    return false;
 }
 
 // Builds the scene's tracer and ray-casts the G-buffer.

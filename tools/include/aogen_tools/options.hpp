@@ -1,0 +1,112 @@
+// aogen_tools/options.hpp — command-line option checks that word their errors as aogen does.
+//
+// CLI11 converts option text itself and says "Could not convert: --count = abc", with no
+// valid range; and it wraps a negative number into an unsigned one without a word
+// (--seed -1 became 2^64 − 1). These validators look at the text first, so each bad value
+// is one line naming the option, the value and what is valid:
+//     --count: 'abc' is not an integer (valid: 1..256)
+//     --seed: '-1' is out of range (valid: 0..18446744073709551615)
+//     --name: '1abc' is not an identifier (valid: letters, digits and _, ...)
+//     --out: is empty (valid: a path)
+// usage: sub->add_option("--count", count)->check(aogen::tools::integer_in(1, 256));
+//        sub->add_option("--name", name)->check(aogen::tools::declaration_name());
+// Shared by the `aogen` command line and aogen_report.
+#pragma once
+
+#include <aogen/error.hpp>
+#include <aogen/layout.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace aogen::tools {
+
+namespace detail {
+
+// The validator's text, or "" when it accepts: the message part after "<option>: ".
+template <class Check>
+CLI::Validator validator(Check check, std::string description)
+{
+    return CLI::Validator(
+        [check](std::string& text) -> std::string {
+            try {
+                check(text);
+                return "";
+            } catch (const error& e) {
+                return e.what();
+            }
+        },
+        std::move(description));
+}
+
+// "problem (valid)", the form CLI11 prefixes with the option's name ("--count: ...").
+[[noreturn]] inline void reject(const std::string& problem, const std::string& valid)
+{
+    throw error(problem + " (" + valid + ")");
+}
+
+} // namespace detail
+
+// A decimal integer in [lo, hi] (an optional '-', then digits only).
+inline CLI::Validator integer_in(long long lo, unsigned long long hi)
+{
+    const std::string valid = "valid: " + std::to_string(lo) + ".." + std::to_string(hi);
+    return detail::validator(
+        [lo, hi, valid](const std::string& text) {
+            const bool negative = !text.empty() && text[0] == '-';
+            const std::string digits = negative ? text.substr(1) : text;
+            if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) detail::reject(quote(text) + " is not an integer", valid);
+            unsigned long long magnitude = 0;
+            const auto parsed = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude);
+            const bool overflow = parsed.ec == std::errc::result_out_of_range;
+            // -magnitude >= lo, i.e. magnitude <= -lo, computed without overflowing at LLONG_MIN.
+            const bool in_range = !overflow && (negative ? lo < 0 && magnitude <= static_cast<unsigned long long>(-(lo + 1)) + 1
+                                                         : magnitude <= hi && (lo <= 0 || magnitude >= static_cast<unsigned long long>(lo)));
+            if (!in_range) detail::reject(quote(text) + " is out of range", valid);
+        },
+        "INT in " + std::to_string(lo) + ".." + std::to_string(hi));
+}
+
+// A finite decimal number in [lo, hi] ("0.5", "1e3"; no "nan", "inf" or trailing text).
+inline CLI::Validator number_in(double lo, double hi)
+{
+    const std::string valid = "valid: " + format_number(lo) + ".." + format_number(hi);
+    return detail::validator(
+        [lo, hi, valid](const std::string& text) {
+            double x = 0;
+            const auto parsed = std::from_chars(text.data(), text.data() + text.size(), x);
+            if (text.empty() || parsed.ptr != text.data() + text.size() || parsed.ec == std::errc::invalid_argument)
+                detail::reject(quote(text) + " is not a number", valid);
+            if (parsed.ec == std::errc::result_out_of_range || !std::isfinite(x) || x < lo || x > hi)
+                detail::reject(quote(text) + " is out of range", valid);
+        },
+        "NUMBER in " + format_number(lo) + ".." + format_number(hi));
+}
+
+// Any text but the empty one.
+inline CLI::Validator not_empty(const std::string& what)
+{
+    return detail::validator(
+        [what](const std::string& text) {
+            if (text.empty()) detail::reject("is empty", "valid: " + what);
+        },
+        "");
+}
+
+// A name a declaration can use (aogen/layout.hpp's rules: an identifier of at most 1024
+// characters that is no keyword of a target language).
+inline CLI::Validator declaration_name()
+{
+    return detail::validator(
+        [](const std::string& text) {
+            const std::string problem = layout::detail::name_problem(text);
+            if (!problem.empty()) throw error(problem);
+        },
+        "IDENTIFIER");
+}
+
+} // namespace aogen::tools
