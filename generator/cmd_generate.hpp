@@ -245,7 +245,7 @@ struct generate_command {
         sub->add_option("--variants", spec, "A variant spec (JSON: \"variants\" names and/or \"matrices\")")->check(not_empty("a variant spec file"));
         sub->add_option("--scene", scene, "What the renderer has and needs (JSON); selects each variant's features")->check(not_empty("a scene file"));
         sub->add_option("--targets", targets, "Comma-separated: " + compile::target_list())->capture_default_str();
-        sub->add_option("--out", out, "Output directory")->required()->check(not_empty("a folder path"));
+        sub->add_option("--out", out, "Output directory")->required()->check(not_empty("a directory path"));
         sub->add_flag("--quiet", quiet, "No progress on stderr");
         sub->add_option("NAME", variant_names, "Variant names (see aogen list); none and no --variants: the default matrix");
         sub->callback([this] { run(); });

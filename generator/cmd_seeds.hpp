@@ -168,7 +168,7 @@ struct seeds_command {
     void add_to(CLI::App& app)
     {
         CLI::App* sub = app.add_subcommand("seeds", "Write the kernels, noise tiles and uniform blocks of the seeds' presets");
-        sub->add_option("--out", out, "Output directory")->capture_default_str()->check(not_empty("a folder path"));
+        sub->add_option("--out", out, "Output directory")->capture_default_str()->check(not_empty("a directory path"));
         sub->callback([this] { run(); });
     }
 

@@ -16,6 +16,8 @@
 #include "cmd_noise.hpp"
 #include "cmd_seeds.hpp"
 
+#include <aogen_tools/options.hpp>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 
 int main(int argc, char** argv)
 {
+    aogen::tools::keep_broken_pipes_as_errors();
     CLI::App app{"aogen: ambient-occlusion kernels, noise, uniform layouts and shader variants"};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Show the help of every command");
@@ -53,6 +56,7 @@ int main(int argc, char** argv)
             aogen::fail("command", first.empty() ? "is missing" : aogen::quote(first) + " is not a command", "valid: " + valid + "; see aogen --help");
         }
         app.parse(argc, argv);
+        aogen::tools::finish_standard_output();
     } catch (const CLI::CallForHelp&) {
         std::cout << app.help();
         return 0;
@@ -60,8 +64,7 @@ int main(int argc, char** argv)
         std::cout << app.help("", CLI::AppFormatMode::All);
         return 0;
     } catch (const CLI::ParseError& e) {
-        const std::string what = e.what(); // ours say what is valid; CLI11's own do not
-        std::cerr << "aogen: " << what << (what.find("(valid:") == std::string::npos ? " (see aogen --help)" : "") << "\n";
+        std::cerr << "aogen: " << aogen::tools::parse_error_line(app, e, "aogen") << "\n";
         return 2;
     } catch (const aogen::error& e) {
         std::cerr << "aogen: " << e.what() << "\n";

@@ -192,7 +192,7 @@ void require_plotter(const std::string& python, const std::string& script)
 std::string plot(const std::string& python, const std::string& script, const std::string& results)
 {
     std::string scratch = (std::filesystem::temp_directory_path() / "aogen_report.XXXXXX").string();
-    if (!::mkdtemp(scratch.data())) aogen::fail("error_vs_time.png", "no scratch folder: " + std::string(std::strerror(errno)), "valid: a writable TMPDIR");
+    if (!::mkdtemp(scratch.data())) aogen::fail("error_vs_time.png", "no scratch directory: " + std::string(std::strerror(errno)), "valid: a writable TMPDIR");
     const std::filesystem::path dir(scratch);
     struct cleanup {
         std::filesystem::path dir;
@@ -232,7 +232,7 @@ int main(int argc, char** argv)
     app.add_option("--warmup-ms", timing.warmup_ms, "continuous untimed GPU work before each scene's timing, in ms")
         ->capture_default_str()->check(aogen::tools::number_in(0.0, 60000.0));
     app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");
-    app.add_option("--out", out, "the report folder")->capture_default_str()->check(aogen::tools::not_empty("a folder path"));
+    app.add_option("--out", out, "the report directory")->capture_default_str()->check(aogen::tools::not_empty("a directory path"));
     app.add_option("--plot-script", plot_script, "the error-against-time plot script")->capture_default_str();
     app.add_option("--python", python, "the Python that runs it (with matplotlib)")->capture_default_str();
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
@@ -244,7 +244,7 @@ int main(int argc, char** argv)
         std::cout << app.help();
         return 0;
     } catch (const CLI::ParseError& e) { // one line, as every other error: CLI11's exit() prints two
-        std::cerr << "aogen_report: " << e.what() << "\n";
+        std::cerr << "aogen_report: " << aogen::tools::parse_error_line(app, e, "aogen_report") << "\n";
         return 2;
     }
 

@@ -81,13 +81,21 @@ inline std::string quote(std::string_view text, size_t limit = 80)
     return out;
 }
 
-// A name or path as the subject of a message: as it is when it is printable ASCII of at
-// most `limit` characters (a file name reads best bare), quote()d otherwise.
-inline std::string printable(std::string_view text, size_t limit = 200)
+// A name or path as the subject of a message: as it is, but every byte that is not
+// printable ASCII written as \xNN and at most `limit` characters kept (a longer one ends
+// in "... (N bytes)"). No quotes: a file name or a member path reads best bare.
+inline std::string printable(std::string_view text, size_t limit = 120)
 {
-    bool plain = text.size() <= limit;
-    for (char c : text) plain = plain && static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f;
-    return plain ? std::string(text) : quote(text, limit);
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    const size_t kept = text.size() > limit ? limit : text.size();
+    for (size_t i = 0; i < kept; ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7f) out += char(c);
+        else out.append("\\x").append(1, hex[c >> 4]).append(1, hex[c & 15]);
+    }
+    if (kept < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
+    return out;
 }
 
 // "<subject>: <problem> (<valid>)". `valid` should start with "valid:" or say what to do.

@@ -302,12 +302,12 @@ inline std::string to_name(const variant& input)
 // Parses a name written by to_name (extras in any order, each at most once).
 inline variant variant_from_name(const std::string& name)
 {
-    const std::string subject = "variant name " + quote(name);
+    const std::string subject = "variant name " + quote(name, 40);
     const std::vector<std::string> t = detail::split(name, '-');
-    const char* layout_help =
-        "valid: ssao-s<N>|gtao-<slices>x<steps>, half|full, bilateral|box|noblur, gbufworld|gbufview|recon, "
-        "std|rev|revinf, persp|ortho, cs|fs, then rawdepth, pc, rc004, powint, wg<X>x<Y>";
-    if (t.size() < 8) fail(subject, "has " + std::to_string(t.size()) + " tokens, too few", layout_help);
+    if (t.size() < 8)
+        fail(subject, "has " + std::to_string(t.size()) + " tokens, too few",
+             "valid: ssao-s<N>|gtao-<S>x<N>, half|full, bilateral|box|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
+             "persp|ortho, cs|fs, then extras; aogen list");
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");
     if (v.tech == technique::ssao) {

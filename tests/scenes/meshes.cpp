@@ -54,6 +54,7 @@ TEST_CASE("a JSON mesh is triangulated and placed by scale, rotation about x and
     if (!have_assimp()) return;
     const fs::path obj = write_file("cube_placed.obj", unit_cube_obj);
     const fs::path json = write_file("cube_placed.json", R"({
+        "name": "cube placed",
         "geometry": [
             {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]},
             {"type": "mesh", "file": "cube_placed.obj", "scale": 2, "rotate_x_degrees": 90, "translate": [1, 2, 3]}

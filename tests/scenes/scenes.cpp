@@ -206,4 +206,20 @@ TEST_CASE("JSON scene errors name the file and the field", "[scenes][json]")
     CHECK_THAT(m, Catch::Contains("scene.json: geometry") && Catch::Contains("is empty"));
     m = message_of("{not json");
     CHECK_THAT(m, Catch::Contains("scene.json") && Catch::Contains("not valid JSON"));
+    // The name comes last: required, not empty, printable.
+    m = message_of("{" + geo + "}");
+    CHECK_THAT(m, Catch::Contains("scene.json.name") && Catch::Contains("is missing"));
+    m = message_of("{" + geo + R"(, "name": "a\u001b[31m"})");
+    CHECK_THAT(m, Catch::Contains("scene.json.name") && Catch::Contains("\\x1b") && !Catch::Contains("\x1b"));
+    m = message_of("{" + geo + R"(, "name": ""})");
+    CHECK_THAT(m, Catch::Contains("scene.json.name") && Catch::Contains("is empty"));
+    // Geometry that cannot be traced is refused where it is read.
+    m = message_of(R"({"geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 0]}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].normal") && Catch::Contains("zero vector"));
+    m = message_of(R"({"geometry": [{"type": "quad", "corner": [0, 0, 0], "e1": [1, 0, 0], "e2": [2, 0, 0]}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0]") && Catch::Contains("parallel"));
+    m = message_of(R"({"geometry": [{"type": "box", "min": [-1e308, -1e308, -1e308], "max": [1e308, 1e308, 1e308]}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].min") && Catch::Contains("1e+15"));
+    m = message_of(R"({"geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "half_extent": -1}]})");
+    CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].half_extent") && Catch::Contains("out of range"));
 }

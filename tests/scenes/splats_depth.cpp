@@ -88,6 +88,7 @@ TEST_CASE("the point_cloud scene draws depth-only splats at the depth of their p
 TEST_CASE("a JSON point becomes a square splat of its size, facing the camera", "[scenes][points][json]")
 {
     const scene s = read_scene(R"({
+        "name": "one splat",
         "geometry": [{"type": "points", "positions": [[0, 0, 0]], "splat_size": 0.5}],
         "camera": {"eye": [0, -5, 0], "target": [0, 0, 0], "up": [0, 0, 1]},
         "renderer": {"normals": "none", "point_cloud": true}
@@ -175,6 +176,7 @@ TEST_CASE("UNORM depth keeps the background exactly at the convention's far valu
 TEST_CASE("the JSON depth_buffer option reaches the G-buffer", "[scenes][depth][json]")
 {
     const scene s = read_scene(R"({
+        "name": "plane at 3",
         "geometry": [{"type": "plane", "point": [0, 0, -3], "normal": [0, 0, 1]}],
         "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "up": [0, 1, 0], "width": 8, "height": 8},
         "renderer": {"depth_buffer": "d16_unorm"}

@@ -22,8 +22,9 @@
 // emit(path, bytes) is write_file, or standard output for an empty path or "-".
 //
 // WRITING A SET: file_set — add() every file of a generation first, then commit():
-//   1. every destination is checked (a directory where a file belongs, a file where a
-//      folder belongs, a folder that cannot be written: refused before anything is written);
+//   1. every destination is checked (a directory or a link where a file belongs, a file
+//      where a folder belongs, a folder that cannot be written: refused before anything is
+//      written; a link inside a generation is refused, not replaced);
 //   2. every file whose bytes change is written into a staging folder beside the
 //      destination folder (".<name>.aogen-staging-<pid>", on the same file system);
 //   3. each staged file is renamed over its destination, the old file first moved into
@@ -37,6 +38,7 @@
 #include <aogen/error.hpp>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -138,15 +140,15 @@ inline fs::path existing_ancestor(fs::path p)
 // aogen::error unless `dir` is, or can be made, a folder we may write into: every part
 // of it that exists is a folder (through links), and the deepest existing one is writable.
 // Nothing is created. What a tool checks before any expensive work.
-inline void require_writable_folder(const fs::path& dir, std::string_view what = "output folder")
+inline void require_writable_folder(const fs::path& dir, std::string_view what = "output directory")
 {
-    if (dir.empty()) fail(what, "is empty", "valid: a folder path");
+    if (dir.empty()) fail(what, "is empty", "valid: a directory path");
     const fs::path base = detail::existing_ancestor(dir);
     const fs::file_type t = detail::target_type(base);
     if (t != fs::file_type::directory)
-        fail(detail::shown(dir), base == dir ? "is not a folder" : detail::shown(base) + " in it is not a folder", std::string("valid: a folder for the ") + std::string(what));
+        fail(detail::shown(dir), base == dir ? "is not a directory" : detail::shown(base) + " in it is not a directory", std::string("valid: a directory for the ") + std::string(what));
     if (::access(base.c_str(), W_OK | X_OK) != 0)
-        fail(detail::shown(dir), detail::shown(base) + " cannot be written: " + std::strerror(errno), "valid: a writable folder");
+        fail(detail::shown(dir), detail::shown(base) + " cannot be written: " + std::strerror(errno), "valid: a writable directory");
 }
 
 // Writes one file (see WRITING ONE FILE above). Returns false when a regular file
@@ -158,7 +160,7 @@ inline bool write_file(const fs::path& path, std::string_view bytes)
     const bool link = fs::is_symlink(fs::symlink_status(path, ec));
     fs::path target = path;
     switch (detail::target_type(path)) { // through any links
-    case fs::file_type::directory: fail(detail::shown(path), "is a folder", "valid: a file path");
+    case fs::file_type::directory: fail(detail::shown(path), "is a directory", "valid: a file path");
     case fs::file_type::not_found:
         if (link) fail(detail::shown(path), "is a symbolic link to nothing", "valid: a link to a file, or a file");
         break;
@@ -173,6 +175,20 @@ inline bool write_file(const fs::path& path, std::string_view bytes)
     if (ec) fail(detail::shown(target.parent_path()), "cannot be created: " + ec.message(), "valid: a writable path");
     detail::replace_atomically(target, bytes);
     return true;
+}
+
+// A closed pipe on standard output becomes a write error (EPIPE) that finish_standard_output
+// reports, instead of SIGPIPE ending the program without a word.
+inline void keep_broken_pipes_as_errors() { ::signal(SIGPIPE, SIG_IGN); }
+
+// aogen::error unless everything written to standard output reached it (a full disk, a
+// closed or broken pipe): a command that prints must not exit 0 having printed nothing.
+inline void finish_standard_output()
+{
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0)
+        fail("standard output", std::string("cannot be written: ") + (errno ? std::strerror(errno) : "the stream failed"),
+             "valid: a standard output that can be written, or --out FILE");
 }
 
 // Writes to `path`, or to standard output when `path` is empty or "-".
@@ -190,7 +206,7 @@ inline std::string read_file(const std::string& path)
 {
     const fs::file_type t = detail::target_type(path);
     if (t == fs::file_type::not_found) fail(detail::shown(path), "does not exist", "valid: an existing, readable file");
-    if (t == fs::file_type::directory) fail(detail::shown(path), "is a folder", "valid: a file");
+    if (t == fs::file_type::directory) fail(detail::shown(path), "is a directory", "valid: a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(detail::shown(path), std::string("cannot be read: ") + std::strerror(errno), "valid: an existing, readable file");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -241,8 +257,11 @@ private:
             for (fs::path p = dest.parent_path(); p != folder && !p.empty(); p = p.parent_path()) {
                 const fs::file_type t = detail::target_type(p);
                 if (t != fs::file_type::not_found && t != fs::file_type::directory)
-                    fail(detail::shown(p), "is not a folder, and " + detail::shown(relative) + " is to be written in it", "valid: a folder or nothing there");
+                    fail(detail::shown(p), "is not a directory, and " + detail::shown(relative) + " is to be written in it", "valid: a directory or nothing there");
             }
+            std::error_code ec;
+            if (fs::is_symlink(fs::symlink_status(dest, ec)))
+                fail(detail::shown(dest), "is a symbolic link, which writing the set would replace", "valid: a regular file or nothing there");
             const fs::file_type t = detail::target_type(dest);
             if (t != fs::file_type::not_found && t != fs::file_type::regular)
                 fail(detail::shown(dest), "is not a regular file, and would be replaced", "valid: a regular file or nothing there");
@@ -260,7 +279,7 @@ private:
             fs::remove_all(root_, ec);
             fs::create_directories(root_ / "new", ec);
             if (!ec) fs::create_directories(root_ / "old", ec);
-            if (ec) fail(detail::shown(root_), "cannot be created: " + ec.message(), "valid: a writable folder beside the output folder");
+            if (ec) fail(detail::shown(root_), "cannot be created: " + ec.message(), "valid: a writable directory beside the output directory");
         }
         ~staging()
         {
@@ -276,7 +295,7 @@ private:
             std::ofstream out(p, std::ios::binary | std::ios::trunc);
             out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
             out.close();
-            if (ec || !out) fail(detail::shown(p), "cannot be written", "valid: room and permission beside the output folder");
+            if (ec || !out) fail(detail::shown(p), "cannot be written", "valid: room and permission beside the output directory");
         }
 
         // Renames each staged file over its destination (the old one kept in "old"), all
@@ -306,7 +325,7 @@ private:
             std::error_code ec;
             fs::create_directories(to.parent_path(), ec);
             fs::rename(from, to, ec);
-            if (ec) fail(detail::shown(to), "cannot be written: " + ec.message(), "valid: a writable output folder");
+            if (ec) fail(detail::shown(to), "cannot be written: " + ec.message(), "valid: a writable output directory");
         }
         // Creates the missing folders up to `dir`, remembering them (outermost first) to undo.
         void make_folders(const fs::path& dir, std::vector<fs::path>& made) const
@@ -316,7 +335,7 @@ private:
             for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
                 std::error_code ec;
                 fs::create_directory(*it, ec);
-                if (ec) fail(detail::shown(*it), "cannot be created: " + ec.message(), "valid: a writable output folder");
+                if (ec) fail(detail::shown(*it), "cannot be created: " + ec.message(), "valid: a writable output directory");
                 made.push_back(*it);
             }
         }

@@ -82,8 +82,10 @@ public:
         if (!f.keys.insert(k).second) fail(path(), "appears twice in one object", "valid: each key once");
         return true;
     }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override
+    bool parse_error(std::size_t, const std::string& token, const nlohmann::detail::exception& e) override
     {
+        if (e.id == 406) // out_of_range.406: the lexer's "number overflow", before any number_float
+            fail(path(), quote(token) + " is beyond the range of a double", "valid: a number of magnitude below 1.8e308");
         std::string what = e.what();
         const size_t tag = what.find("] "); // "[json.exception.parse_error.101] parse error at line 1, ..."
         fail(source_, "is not valid JSON: " + (tag == std::string::npos ? what : what.substr(tag + 2)), "valid: a JSON document");
@@ -117,13 +119,17 @@ private:
         frames_.pop_back();
         return true;
     }
-    // "source.key[3].key": the place the parse is at.
+    // "source.key[3].key": the place the parse is at. A run of arrays in arrays is written
+    // "[0][...]" past its first two levels, so a path through 100 000 of them stays short.
     std::string path() const
     {
         std::string p = source_;
+        size_t run = 0; // consecutive array levels so far
         for (const frame& f : frames_) {
+            run = f.object ? 0 : run + 1;
             if (f.object && !f.key.empty()) p = key_path(p, f.key);
-            else if (!f.object && f.index > 0) p += "[" + std::to_string(f.index - 1) + "]";
+            else if (!f.object && f.index > 0 && run <= 2) p += "[" + std::to_string(f.index - 1) + "]";
+            else if (!f.object && run == 3) p += "[...]";
         }
         return p;
     }
@@ -173,7 +179,7 @@ public:
     json_reader field(const char* key) const
     {
         require_object();
-        if (!value_->contains(key)) fail(key_path(path_, key), "is missing", "it is required");
+        if (!value_->contains(key)) fail(key_path(path_, key), "is missing", "valid: a value here is required");
         return json_reader((*value_)[key], key_path(path_, key));
     }
 

@@ -109,4 +109,24 @@ inline CLI::Validator declaration_name()
         "IDENTIFIER");
 }
 
+// One line for a CLI11 parse error, in aogen's form: CLI11's own messages ("--rules is
+// required", "The following argument was not expected: --frob") say what is wrong but not
+// what is valid, so the line adds the option's help text, or the command's options.
+inline std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e, const std::string& program)
+{
+    const std::string what = printable(e.what(), 200);
+    if (what.find("(valid:") != std::string::npos) return what; // one of ours
+    const CLI::App* command = &app;
+    for (const CLI::App* sub : app.get_subcommands()) command = sub; // the one being parsed
+    for (const CLI::Option* o : command->get_options()) {
+        const std::string name = o->get_name(); // "--rules", or a positional's name
+        if (!name.empty() && name[0] == '-' && what.find(name) != std::string::npos && !o->get_description().empty())
+            return what + " (valid: " + name + " is: " + printable(o->get_description(), 160) + ")";
+    }
+    std::string options;
+    for (const CLI::Option* o : command->get_options())
+        if (!o->get_name().empty() && o->get_name()[0] == '-' && o->get_name() != "--help") options += (options.empty() ? "" : ", ") + o->get_name();
+    return what + " (valid: the options of " + (command == &app ? program : program + " " + command->get_name()) + ": " + options + ")";
+}
+
 } // namespace aogen::tools

@@ -63,7 +63,7 @@ inline void require_radius_works(const aogen::scenes::scene& s)
 {
     const radius_range r = ao_radius_range();
     if (!(s.ao_radius >= r.lo && s.ao_radius <= r.hi))
-        aogen::fail("scene " + aogen::quote(s.name) + ": ao_radius", aogen::format_number(s.ao_radius) + " is outside what the variants' settings take",
+        aogen::fail(s.source + ": ao_radius", aogen::format_number(s.ao_radius) + " is outside what the variants' settings take",
                     "valid: " + aogen::format_number(r.lo) + ".." + aogen::format_number(r.hi) + " world units");
 }
 

@@ -27,7 +27,7 @@
 //
 // JSON FORMAT (every key optional unless marked; unknown keys are errors)
 //   {
-//     "name": "my scene",                           (not empty; default: the file's stem)
+//     "name": "my scene",                           (required: printable, 1..100 characters)
 //     "geometry": [                                              (required, ≥ 1 entry)
 //       {"type": "plane",  "point": [x,y,z], "normal": [x,y,z], "half_extent": 1e4},
 //                                                                 (normal not zero; half_extent > 0)
@@ -142,6 +142,7 @@ struct renderer_inputs {
 
 struct scene {
     std::string name;
+    std::string source;             // where it came from, for messages: its file, or "built-in scene 'crease'"
     std::vector<plane> planes;
     std::vector<box> boxes;
     std::vector<sphere> spheres;
@@ -340,9 +341,7 @@ inline scene read_scene(const std::string& text, const std::string& source)
     const tools::json_reader root(doc, source);
     root.only_keys({"name", "geometry", "camera", "ao_radius", "renderer"});
     scene s;
-    // The report's tables and strip file are named by it: never empty.
-    s.name = root.has("name") ? root.string("name") : std::filesystem::path(source).stem().string();
-    if (s.name.empty()) fail(root.path() + ".name", "is empty", "valid: a name for the scene, e.g. \"box on a floor\"");
+    s.source = source;
 
     const tools::json_reader geo = root.array("geometry");
     for (size_t i = 0; i < geo.size(); ++i) {
@@ -426,6 +425,12 @@ inline scene read_scene(const std::string& text, const std::string& source)
                                                                       "a depth buffer format");
     }
     validate(s, source);
+    // Checked last, so that a file's other mistakes are named first. The report's tables,
+    // progress and strip file are named by it: present, not empty, printable.
+    s.name = root.string("name");
+    if (s.name.empty() || printable(s.name) != s.name || s.name.size() > 100)
+        fail(root.path() + ".name", s.name.empty() ? "is empty" : quote(s.name) + " is not a printable name of at most 100 characters",
+             "valid: a name for the scene, e.g. \"box on a floor\"");
     return s;
 }
 
@@ -544,6 +549,7 @@ inline scene builtin_scene(const std::string& name)
 {
     scene s;
     s.name = name;
+    s.source = "built-in scene " + quote(name);
     camera& c = s.camera;
     c.up = {0, 0, 1};
     const plane floor{{0, 0, 0}, {0, 0, 1}};
