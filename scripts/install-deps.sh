@@ -17,6 +17,8 @@ packages=(
   libstb-dev                  # PNG image strips of the report (stb_image_write)
   python3-matplotlib          # the report's error-against-time plot
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers   # the Vulkan harness (lavapipe)
+  clang-14 libclang-rt-14-dev # the fuzz targets (tests/fuzz, scripts/fuzz.sh): libFuzzer, ASan, UBSan
+  llvm-14                     # llvm-symbolizer: function names and lines in the fuzz targets' reports
 )
 
 missing=()
