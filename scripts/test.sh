@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"
-scripts/fuzz.sh 25
+AOGEN_FUZZ_STRICT=1 scripts/fuzz.sh 25   # strict: any exception but aogen::error is a finding
