@@ -223,3 +223,26 @@ TEST_CASE("JSON scene errors name the file and the field", "[scenes][json]")
     m = message_of(R"({"geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "half_extent": -1}]})");
     CHECK_THAT(m, Catch::Contains("scene.json.geometry[0].half_extent") && Catch::Contains("out of range"));
 }
+
+TEST_CASE("normals_facing as_stored keeps a surface's own normal, the default faces the camera", "[scenes][json]")
+{
+    // The floor z = 0, normal +z, seen from below: its stored normal points away from the camera.
+    const std::string json = R"({"name": "floor from below", "geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}],
+        "camera": {"eye": [0, -1, -3], "target": [0, 0, 0], "up": [0, 0, 1], "width": 8, "height": 8}, "renderer": {"normals_facing": "as_stored"}})";
+    const scene stored = read_scene(json, "below.json");
+    CHECK(!stored.renderer.normals_face_camera);
+    gbuffer_options o;
+    o.face_camera = false;
+    const gbuffer as_stored = render_gbuffer(stored, o);
+    const gbuffer facing = render_gbuffer(stored); // the reference's G-buffer: always facing
+    size_t hits = 0;
+    for (size_t i = 0; i < as_stored.hit.size(); ++i) {
+        if (!as_stored.hit[i]) continue;
+        ++hits;
+        CHECK(as_stored.normals[4 * i + 2] == Approx(1.0f));
+        CHECK(facing.normals[4 * i + 2] == Approx(-1.0f));
+    }
+    CHECK(hits > 0);
+    CHECK_THAT(message_of(R"({"name": "x", "geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}],
+        "renderer": {"normals_facing": "outward"}})"), Catch::Contains("renderer.normals_facing") && Catch::Contains("as_stored"));
+}

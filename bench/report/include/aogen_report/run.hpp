@@ -304,6 +304,7 @@ private:
         aogen::scenes::gbuffer_options o;
         o.use_scene_normals = false;
         o.normals = space;
+        o.face_camera = false; // as the scene's renderer stores them (the reference's face the camera)
         const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(for_variant(scene_, v), tracer_, o);
         return cache_.emplace(key, entry_type{aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(g), nullptr}).first->second;
     }

@@ -23,7 +23,9 @@
 //     k = round-to-nearest(d·(2ⁿ − 1)) (ties up), then float(k)/float(2ⁿ − 1). 0 and 1 — the
 //     background — stay exact. `position` keeps the exact hit (the ground truth's point).
 //   * normals: RGBA32F, xyz unit length facing the camera (two-sided surfaces are flipped
-//     towards the ray), w = 1 on geometry; (0, 0, 0, 0) on background. World space by
+//     towards the ray; with face_camera false and the scene's renderer "normals_facing":
+//     "as_stored", a surface keeps its own orientation: a plane its given normal, a back
+//     face pointing away), w = 1 on geometry; (0, 0, 0, 0) on background. World space by
 //     default, view space with normal_space::view; empty with normal_space::none.
 //   * position: world-space hit, xyz doubles per pixel (NaN on background); hit: 1/0;
 //     geometry: the hit's geometry id (scene::build order), or −1. The hit's t, position and
@@ -74,6 +76,8 @@ inline float stored_depth(float d, depth_format format)
 struct gbuffer_options {
     bool use_scene_normals = true;                 // take the space from scene.renderer.normals
     normal_space normals = normal_space::world;    // used when use_scene_normals is false
+    bool face_camera = true;                       // flip normals toward the ray (the reference's need);
+                                                   // false follows scene.renderer.normals_face_camera
 };
 
 // The camera ray through pixel (x, y)'s centre: world origin and direction, and the same
@@ -153,7 +157,8 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
             g.geometry[i] = int(h.geometry);
             if (g.normals_space != normal_space::none) {
                 dvec3 nw = truth::normalize(h.normal);
-                if (truth::dot(nw, r.dir) > 0) nw = -1.0 * nw;
+                const bool flip = o.face_camera || s.renderer.normals_face_camera;
+                if (flip && truth::dot(nw, r.dir) > 0) nw = -1.0 * nw;
                 const dvec3 nn = g.normals_space == normal_space::world ? nw : rays.view(nw);
                 g.normals[4 * i] = float(nn.x), g.normals[4 * i + 1] = float(nn.y), g.normals[4 * i + 2] = float(nn.z);
                 g.normals[4 * i + 3] = 1.0f;

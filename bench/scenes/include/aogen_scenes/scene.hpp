@@ -52,6 +52,8 @@
 //     },
 //     "ao_radius": 1.0,                                           (world units, > 0)
 //     "renderer": {"normals": "world" | "view" | "none", "point_cloud": false,
+//                  "normals_facing": "camera" | "as_stored",  (default camera; as_stored keeps a
+//                                       surface's own normal, so back faces point away)
 //                  "depth_buffer": "d32_sfloat" | "d24_unorm" | "d16_unorm"}  (default d32_sfloat)
 //   }
 //   Every coordinate and length is a finite number of magnitude at most 1e15 (max_coordinate):
@@ -136,6 +138,7 @@ struct camera {
 
 struct renderer_inputs {
     normal_space normals = normal_space::world;
+    bool normals_face_camera = true; // false: normals as stored, a back face's pointing away from the camera
     bool point_cloud = false;
     depth_format depth_buffer = depth_format::d32_sfloat; // the G-buffer's depth is stored as this
 };
@@ -335,13 +338,13 @@ E read_enum(const tools::json_reader& r, const char* key, std::initializer_list<
 } // namespace detail
 
 // Parses a scene from JSON text; `source` names it in every message (a file name).
-inline scene read_scene(const std::string& text, const std::string& source)
+// Parses a scene from a JSON object (a file's root, or a value inside another document
+// such as a stability case); `source` names the file it came from, for mesh paths and messages.
+inline scene read_scene(const tools::json_reader& root, const std::string& source)
 {
-    const nlohmann::json doc = tools::json_reader::parse(text, source);
-    const tools::json_reader root(doc, source);
     root.only_keys({"name", "geometry", "camera", "ao_radius", "renderer"});
     scene s;
-    s.source = source;
+    s.source = root.path();
 
     const tools::json_reader geo = root.array("geometry");
     for (size_t i = 0; i < geo.size(); ++i) {
@@ -411,11 +414,14 @@ inline scene read_scene(const std::string& text, const std::string& source)
     if (root.has("ao_radius")) s.ao_radius = detail::read_length(root, "ao_radius");
     if (root.has("renderer")) {
         const tools::json_reader r = root.field("renderer");
-        r.only_keys({"normals", "point_cloud", "depth_buffer"});
+        r.only_keys({"normals", "normals_facing", "point_cloud", "depth_buffer"});
         if (r.has("normals"))
             s.renderer.normals = detail::read_enum<normal_space>(
                 r, "normals", {{"world", normal_space::world}, {"view", normal_space::view}, {"none", normal_space::none}},
                 "a normal space");
+        if (r.has("normals_facing"))
+            s.renderer.normals_face_camera =
+                detail::read_enum<bool>(r, "normals_facing", {{"camera", true}, {"as_stored", false}}, "a normal orientation");
         if (r.has("point_cloud")) s.renderer.point_cloud = r.boolean("point_cloud");
         if (r.has("depth_buffer"))
             s.renderer.depth_buffer = detail::read_enum<depth_format>(r, "depth_buffer",
@@ -424,7 +430,7 @@ inline scene read_scene(const std::string& text, const std::string& source)
                                                                        {"d16_unorm", depth_format::d16_unorm}},
                                                                       "a depth buffer format");
     }
-    validate(s, source);
+    validate(s, root.path());
     // Checked last, so that a file's other mistakes are named first. The report's tables,
     // progress and strip file are named by it: present, not empty, printable.
     s.name = root.string("name");
@@ -432,6 +438,13 @@ inline scene read_scene(const std::string& text, const std::string& source)
         fail(root.path() + ".name", s.name.empty() ? "is empty" : quote(s.name) + " is not a printable name of at most 100 characters",
              "valid: a name for the scene, e.g. \"box on a floor\"");
     return s;
+}
+
+// Parses a scene from JSON text; `source` (a file name) starts every error message.
+inline scene read_scene(const std::string& text, const std::string& source)
+{
+    const nlohmann::json doc = tools::json_reader::parse(text, source);
+    return read_scene(tools::json_reader(doc, source), source);
 }
 
 inline scene load_scene(const std::string& path) { return read_scene(tools::read_file(path), path); }
