@@ -12,7 +12,7 @@
 //      (ao_gtao_projected_normal);
 //   2. march AO_GTAO_STEPS steps to each side along the direction in screen space, at
 //      full resolution, step j at j / STEPS of the radius projected at P's depth (capped
-//      at the screen's diagonal), keeping per side the largest cosine between V and the
+//      at half the screen's height), keeping per side the largest cosine between V and the
 //      direction to the sample's view-space point (the highest horizon). Samples off
 //      screen, on background, on the pixel itself, or farther than
 //      radius * (1 + thickness_bias * 10) from P do not raise the horizon;
@@ -88,14 +88,14 @@ float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float ma
 {
     ivec2 size = ao_depth_size();
     if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return -1.0;
-    ivec2 q = ivec2(pos);
+    // The surface the sample lands on (depth.glsl's ao_depth_at): on a plane, its point
+    // under pos on the slice line; at a silhouette, the nearest texel's own point.
+    float depth;
+    vec2 at;
+    ivec2 q;
+    if (!ao_depth_at(pos, depth, at, q)) return -1.0;
     if (q == centre_pixel) return -1.0;
-    float depth = ao_load_depth(q);
-    if (ao_is_background(depth)) return -1.0;
-    // At the sample's own position on the slice line, not its texel's centre: a texel
-    // centre lies off the slice, and on a plane its direction can rise above the plane's
-    // true horizon in the slice (a fronto-parallel plane came out at 0.994, not 1).
-    vec3 w = ao_view_position(pos / vec2(size), depth) - P;
+    vec3 w = ao_view_position(at / vec2(size), depth) - P;
     float distance = length(w);
     if (!(distance > 1e-30 && distance <= max_distance)) return -1.0; // NaN and inf fail too
     return dot(w, V) / distance;
@@ -161,9 +161,13 @@ float ao_pass(ivec2 target_pixel)
 #if !defined(AO_PROJECTION_ORTHOGRAPHIC)
     pixels_per_unit /= max(-P.z, 1e-30);
 #endif
-    float radius_pixels = min(u.radius * pixels_per_unit, length(fsize));
+    // Capped at half the screen's height: a radius past the screen spread its steps a third
+    // of the screen apart and stepped over every contact; the capped one finds what the
+    // screen shows. The world radius the cap leaves bounds the horizon search as u.radius does.
+    float radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
     if (!ao_is_finite(radius_pixels)) radius_pixels = 0.0;
-    float max_distance = u.radius * (1.0 + u.thickness_bias * 10.0);
+    float radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
+    float max_distance = radius * (1.0 + u.thickness_bias * 10.0);
 
     vec2 rotation = ao_noise_rotation(target_pixel);
     vec2 centre = vec2(p) + 0.5;

@@ -6,14 +6,20 @@
 // Per pixel: reconstruct the view-space position P; take the normal n (normals.glsl);
 // build a tangent frame around n, rotated by the pixel's noise vector (Gram-Schmidt);
 // for each kernel sample (a point of the unit hemisphere around +z):
-//   S = P + TBN * kernel[i].xyz * radius, projected to the screen with u.proj;
-//   samples behind the camera or projecting off screen are skipped (they count as
-//   unoccluded: the sum is still divided by all AO_SSAO_SAMPLES, as the seeds do), and
-//   so are samples landing on background, and samples landing in the pixel's own texel
+//   S = P + TBN * kernel[i].xyz * radius, projected to the screen with u.proj, where radius
+//   is u.radius capped at half the screen's height in world units at P's depth
+//   (ao_ssao_radius: a hemisphere larger than the screen only sends samples off it);
+//   samples behind the camera or projecting off screen are not judged: the screen says
+//   nothing about them, so the sum is divided by the N samples that land on it (the seeds
+//   divide by all AO_SSAO_SAMPLES, which counts every unknown sample as open and lightens
+//   pixels near the border and wide radii); samples landing on background are judged
+//   open, and so are samples landing in the pixel's own texel
 //   (ours, not the seeds'): comparing the surface with its own depth can only measure
 //   depth quantization -- at grazing angles, or when the radius projects below a pixel,
 //   it darkens open planes -- never an occluder;
-//   the sample is occluded when the scene's view z at its pixel is > S.z + bias (the
+//   the sample is occluded when the scene's view z where it projects (depth.glsl's
+//   ao_depth_at: a plane's depth under the sample itself, or at a silhouette its texel's)
+//   is > S.z + bias (the
 //   visible surface is closer to the camera than the sample: the sample is inside
 //   geometry). Comparing with the sample's z, not the pixel's, keeps the bias
 //   slope-invariant on flat surfaces;
@@ -21,7 +27,7 @@
 //     AO_RANGE_CHECK_TAOS     1 - smoothstep(0, radius, |dz|)   (0 from |dz| = radius on)
 //     AO_RANGE_CHECK_SEED004  smoothstep(0, 1, radius / |dz|)   (1 while |dz| <= radius,
 //                                                               so |dz| = 0 divides nothing)
-// Output, with occ the weighted count and N = AO_SSAO_SAMPLES:
+// Output, with occ the weighted count and N the samples judged (no sample judged: occ / N = 0):
 //   AO_OUTPUT_STRENGTH         clamp(1 - occ / N * strength, 0, 1)            (seeds 000, 004)
 //   AO_OUTPUT_POWER_INTENSITY  clamp(mix(1, pow(max(1 - occ / N, 0), power), intensity), 0, 1)
 //                                                                              (seed 003)
@@ -57,17 +63,34 @@ mat3 ao_ssao_frame(vec3 n, vec2 r)
     return mat3(t, cross(n, t), n);
 }
 
-// The weight of an occluded sample whose scene point is |dz| away in view depth.
-float ao_ssao_range_weight(float abs_dz)
+// The radius a pixel at view-space P can use: u.radius, but at most the world size of half
+// the screen's height at P's depth. A larger hemisphere sends most samples off screen or
+// behind the camera, where they count as unoccluded: a radius past the screen read about
+// twice as wrong as a normal one, all of it too light. Within the screen, the samples find
+// what the screen can show.
+float ao_ssao_radius(vec3 P)
+{
+#if defined(AO_PROJECTION_ORTHOGRAPHIC)
+    float half_height = 1.0 / abs(u.proj[1][1]);
+#else
+    float half_height = max(-P.z, 0.0) / abs(u.proj[1][1]);
+#endif
+    float r = min(u.radius, half_height);
+    return r > 0.0 ? r : u.radius; // a degenerate projection keeps the radius as given
+}
+
+// The weight of an occluded sample whose scene point is |dz| away in view depth, for a
+// hemisphere of `radius`.
+float ao_ssao_range_weight(float abs_dz, float radius)
 {
 #if defined(AO_RANGE_CHECK_TAOS)
     // 1 - smoothstep(0, radius, |dz|), written so that radius 0 is a step, not 0 / 0.
-    if (!(abs_dz < u.radius)) return 0.0;
-    return 1.0 - smoothstep(0.0, 1.0, abs_dz / u.radius); // u.radius > abs_dz >= 0
+    if (!(abs_dz < radius)) return 0.0;
+    return 1.0 - smoothstep(0.0, 1.0, abs_dz / radius); // radius > abs_dz >= 0
 #else
     // smoothstep(0, 1, radius / |dz|): 1 for |dz| <= radius, |dz| = 0 included.
-    if (abs_dz <= u.radius) return 1.0;
-    return smoothstep(0.0, 1.0, u.radius / max(abs_dz, 1e-30));
+    if (abs_dz <= radius) return 1.0;
+    return smoothstep(0.0, 1.0, radius / max(abs_dz, 1e-30));
 #endif
 }
 
@@ -86,27 +109,34 @@ float ao_pass(ivec2 target_pixel)
     vec3 n;
     if (!ao_surface_normal(p, P, V, n)) return 1.0;
     mat3 tbn = ao_ssao_frame(n, ao_noise_rotation(target_pixel));
+    float radius = ao_ssao_radius(P);
+    float bias = u.bias * (radius / u.radius); // a capped hemisphere keeps the bias's share of it
 
     ivec2 size = ao_depth_size();
     vec2 fsize = vec2(size);
     float occlusion = 0.0;
+    float judged = 0.0; // samples that land on screen, in front of the camera
     for (int i = 0; i < AO_SSAO_SAMPLES; ++i) {
-        vec3 S = P + tbn * (u.kernel[i].xyz * u.radius);
+        vec3 S = P + tbn * (u.kernel[i].xyz * radius);
         vec4 clip = u.proj * vec4(S, 1.0);
         if (!(clip.w > 1e-30)) continue; // behind the camera (perspective)
         vec2 ndc = clip.xy / clip.w;
         vec2 uv = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5);
         // Off screen (a NaN fails every comparison and is skipped too).
         if (!(uv.x >= 0.0 && uv.y >= 0.0 && uv.x < 1.0 && uv.y < 1.0)) continue;
-        ivec2 q = min(ivec2(uv * fsize), size - 1);
+        judged += 1.0;
+        // The scene's depth where S projects (depth.glsl's ao_depth_at: on a plane, under S
+        // itself; at a silhouette, the nearest texel's).
+        float scene_depth;
+        vec2 at;
+        ivec2 q;
+        if (!ao_depth_at(uv * fsize, scene_depth, at, q)) continue; // background: judged open
         if (q == p) continue; // its own texel: a self-comparison that can only measure depth quantization
-        float scene_depth = ao_load_depth(q);
-        if (ao_is_background(scene_depth)) continue; // the background occludes nothing
-        float scene_z = ao_view_z(ao_pixel_uv(q), scene_depth);
-        if (scene_z > S.z + u.bias && ao_is_finite(scene_z))
-            occlusion += ao_ssao_range_weight(abs(P.z - scene_z));
+        float scene_z = ao_view_z(at / fsize, scene_depth);
+        if (scene_z > S.z + bias && ao_is_finite(scene_z))
+            occlusion += ao_ssao_range_weight(abs(P.z - scene_z), radius);
     }
-    float occluded = occlusion / float(AO_SSAO_SAMPLES);
+    float occluded = judged > 0.0 ? occlusion / judged : 0.0;
 #if defined(AO_OUTPUT_STRENGTH)
     return clamp(1.0 - occluded * u.strength, 0.0, 1.0);
 #else

@@ -13,6 +13,7 @@
 // exit status 1 (2 for command-line syntax), before anything is written; every file is
 // written to a temporary name and renamed.
 #include <aogen_report/markdown.hpp>
+#include <aogen_report/suite_report.hpp>
 
 #include <aogen/matrix.hpp>
 #include <aogen_tools/files.hpp>
@@ -206,6 +207,40 @@ std::string plot(const std::string& python, const std::string& script, const std
     return aogen::tools::read_file((dir / "error_vs_time.png").string());
 }
 
+// Built-in case names or case JSON files; empty: every built-in case.
+std::vector<aogen_report::stability_case> load_cases(const std::string& list)
+{
+    std::vector<aogen_report::stability_case> out;
+    const std::vector<std::string> items = list.empty() ? aogen_report::builtin_case_names() : comma_list(list);
+    for (const std::string& item : items)
+        out.push_back(ends_with(item, ".json") ? aogen_report::read_case(aogen::tools::read_file(item), item) : aogen_report::builtin_case(item));
+    return out;
+}
+
+// aogen_report --suite stability: every variant on every case, report.md and results.json
+// into `out`; with `check`, exit 1 when any run fails.
+int stability_main(const std::string& cases, const std::string& variants, int rays, const std::string& device, bool validation,
+                   const std::string& out, bool check, const std::string& command, const std::function<void(const std::string&)>& progress)
+{
+    aogen_report::suite_settings s;
+    s.cases = load_cases(cases);
+    s.variants = variants.empty() ? aogen_report::suite_variants() : load_variants(variants);
+    s.grid = grid_for_rays(rays);
+    s.device.name = device, s.device.validation = validation;
+    s.progress = progress;
+    aogen::tools::require_writable_folder(out, "--out");
+    const aogen_report::suite_data d = aogen_report::run_suite(s);
+    aogen::tools::file_set set(out);
+    set.add("results.json", aogen_report::suite_json(d, command));
+    set.add("report.md", aogen_report::suite_markdown(d, command));
+    set.commit();
+    progress("wrote " + (std::filesystem::path(out) / "report.md").string() + ": " + std::to_string(d.failures()) + " failed runs");
+    if (check && d.failures() > 0)
+        aogen::fail("stability suite", std::to_string(d.failures()) + " runs failed (see " + (std::filesystem::path(out) / "report.md").string() + ")",
+                    "valid: every case passing");
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -238,6 +273,13 @@ int main(int argc, char** argv)
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
     app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
     app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch floor");
+    std::string suite, cases;
+    bool check = false;
+    app.add_option("--suite", suite, "run a suite instead of the error-against-time report: stability")
+        ->check(CLI::IsMember({"stability"}));
+    app.add_option("--cases", cases, "with --suite stability: built-in case names or case .json files, comma-separated (default: all 30)")
+        ->check(aogen::tools::not_empty("case names or files"));
+    app.add_flag("--check", check, "with --suite stability: exit 1 when any case fails (for CI)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -249,7 +291,24 @@ int main(int argc, char** argv)
     }
 
     const auto start = std::chrono::steady_clock::now();
+    const auto progress = [&](const std::string& line) {
+        const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cerr << "aogen_report " << std::fixed << std::setprecision(1) << t << "s " << line << std::endl;
+    };
+    std::ostringstream command;
+    for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
     try {
+        // Options that belong to the other mode are refused, not ignored.
+        const std::vector<std::string> report_only{"--scenes", "--size", "--rounds", "--iterations", "--budget-ms", "--warmup-ms",
+                                                   "--plot-script", "--python", "--no-feature-saving", "--no-fetch-floor"};
+        for (const std::string& o : report_only)
+            if (!suite.empty() && app.count(o) > 0)
+                aogen::fail(o, "is an option of the error-against-time report, not of --suite " + suite, "valid: leave it out with --suite");
+        for (const char* o : {"--cases", "--check"})
+            if (suite.empty() && app.count(o) > 0) aogen::fail(o, "goes with --suite stability", "valid: --suite stability " + std::string(o));
+        if (!suite.empty())
+            return stability_main(cases, variants, app.count("--rays") ? rays : 1024, device, validation, out, check, command.str(), progress);
+
         aogen_report::report_settings s;
         parse_size(size, s.width, s.height);
         s.grid = grid_for_rays(rays);
@@ -259,12 +318,7 @@ int main(int argc, char** argv)
         s.fetch_floor = !no_floor;
         s.scenes = load_scenes(scenes);
         s.variants = load_variants(variants);
-        s.progress = [&](const std::string& line) {
-            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            std::cerr << "aogen_report " << std::fixed << std::setprecision(1) << t << "s " << line << std::endl;
-        };
-        std::ostringstream command;
-        for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
+        s.progress = progress;
         const std::filesystem::path folder(out);
         // Everything a run needs besides its own work, checked before it starts.
         aogen::tools::require_writable_folder(folder, "--out");

@@ -90,3 +90,46 @@ float ao_view_z(vec2 uv, float depth)
     return p.z / max(p.w, 1e-30);
 #endif
 }
+
+// The raw depth of the surface a sample at screen position `pos` (full-resolution pixels,
+// centres at +0.5) lands on, and `at`, the screen position that depth belongs to; false on
+// background. `nearest` gets pos's texel.
+//
+// Between four texels of one plane it is the plane's depth under pos itself (at = pos): raw
+// depth is affine in screen space over a plane in every convention (standard and reversed
+// depth are affine in 1/z, and 1/z is affine over a plane on screen; orthographic depth is
+// affine in z), so the bilinear mix of the four is exact. That matters where depth changes
+// fast from texel to texel -- a floor seen at a grazing angle, a wide lens's edges, a screen
+// a few pixels tall: a texel's own depth taken at a point up to half a texel away lies above
+// the floor, and samples read such points as occluders (distant floors banded dark, a 175
+// degree view's open floor at 0.92 under GTAO, a 256x8 view's open floor at 0.6 under SSAO).
+// Where the four do not lie on one plane (a silhouette: their diagonals' sums differ by more
+// than a quarter of their spread), or one is background, it is the nearest texel's own depth
+// at its centre (at = the centre): a real surface point, where that depth at pos would be a
+// point on no surface -- on a face seen edge-on, one texel wide, such a point sat in front of
+// the face and read as an occluder.
+bool ao_depth_at(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
+{
+    ivec2 size = ao_depth_size();
+    nearest = clamp(ivec2(pos), ivec2(0), size - 1);
+    depth = ao_load_depth(nearest);
+    at = vec2(nearest) + 0.5;
+    if (ao_is_background(depth)) return false;
+    vec2 t = pos - 0.5;
+    vec2 f = t - floor(t);
+    // The 2x2 texels around pos, clamped at the edges (four loads, not a textureGather:
+    // ESSL 3.00 and GLSL 3.30 have no gather, and neighbouring loads share a cache line).
+    ivec2 i0 = ivec2(floor(t));
+    ivec2 last = size - 1;
+    float d00 = ao_load_depth(clamp(i0, ivec2(0), last));
+    float d10 = ao_load_depth(clamp(i0 + ivec2(1, 0), ivec2(0), last));
+    float d01 = ao_load_depth(clamp(i0 + ivec2(0, 1), ivec2(0), last));
+    float d11 = ao_load_depth(clamp(i0 + ivec2(1, 1), ivec2(0), last));
+    if (ao_is_background(d00) || ao_is_background(d10) || ao_is_background(d01) || ao_is_background(d11)) return true;
+    float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
+    float planarity = abs(d00 + d11 - d10 - d01);
+    if (planarity > 0.25 * spread + 2.5e-7 * abs(d00)) return true; // not one plane
+    depth = mix(mix(d00, d10, f.x), mix(d01, d11, f.x), f.y);
+    at = pos;
+    return true;
+}

@@ -96,8 +96,9 @@ TEST_CASE("vulkan: a chain bound once runs again and again with the same result,
     const vulkan::chain_result first = ba->run_once(0.0f);
     // The one-call convenience gives what the bound chain gives.
     CHECK(a.run(host, settings_for(proj)).ao == first.ao);
-    // The crease is occluded somewhere: the comparisons below compare real images.
-    CHECK(*std::min_element(first.ao.begin(), first.ao.end()) < 0.9f);
+    // The crease is occluded somewhere (about 0.96 at this size; everything else is open,
+    // 1): the comparisons below compare real images.
+    CHECK(*std::min_element(first.ao.begin(), first.ao.end()) < 0.98f);
 
     vulkan::timing_options o;
     o.rounds = 3;

@@ -91,10 +91,12 @@ TEST_CASE("vulkan: fragment and compute variants of the same axes give the same 
         const vulkan::chain_result f = fragment.run(s.g, settings_for(s.proj));
         const vulkan::chain_result c = compute.run(s.g, settings_for(s.proj));
         CHECK(max_difference(f, c) <= 1.0f / 255.0f);
-        // Not all ones: the crease is occluded, so the comparison compares something.
+        // Not all ones: the crease is occluded, so the comparison compares something. (Only
+        // the crease: at this size it reads 0.90 to 0.97, and the open floor is 1 -- it read
+        // darker before depth.glsl's ao_depth_at, from a depth-lookup error.)
         float lowest = 1.0f;
         for (float a : f.ao) lowest = std::min(lowest, a);
-        CHECK(lowest < 0.9f);
+        CHECK(lowest < 0.98f);
         require_clean(*ctx);
     }
 }

@@ -1,8 +1,8 @@
 // floor/gtao.glsl -- the fetch floor of gtao.glsl: per pixel the centre depth, the normal's
 // fetches and the noise rotation, then, for each of AO_GTAO_SLICES slices rotated by the
-// noise, AO_GTAO_STEPS depth fetches on each side along the slice's screen direction at
-// j / STEPS of the radius in pixels -- the positions gtao.glsl reads -- and no horizon,
-// no slice integral.
+// noise, AO_GTAO_STEPS samples on each side along the slice's screen direction at
+// j / STEPS of the radius in pixels -- the positions gtao.glsl reads, each a depth fetch and
+// a 2x2 gather (depth.glsl's ao_surface_at) -- and no horizon, no slice integral.
 
 float ao_pass(ivec2 target_pixel)
 {
@@ -17,7 +17,7 @@ float ao_pass(ivec2 target_pixel)
         vec2 dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
             vec2 offset = dir * (radius_pixels * (float(j) / float(AO_GTAO_STEPS)));
-            sum += ao_floor_depth(ivec2(centre + offset)) + ao_floor_depth(ivec2(centre - offset));
+            sum += ao_floor_surface_fetches(centre + offset) + ao_floor_surface_fetches(centre - offset);
         }
     }
     return fract(sum);

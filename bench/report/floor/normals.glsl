@@ -14,6 +14,18 @@ float ao_floor_depth(ivec2 q)
     return ao_load_depth(q);
 }
 
+// What common/depth.glsl's ao_depth_at reads for a sample at screen position pos: the
+// nearest texel and the 2x2 texels around pos.
+float ao_floor_surface_fetches(vec2 pos)
+{
+    ivec2 size = ao_depth_size();
+    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0.0;
+    ivec2 i0 = ivec2(floor(pos - 0.5));
+    ivec2 last = size - 1;
+    return ao_load_depth(ivec2(pos)) + ao_load_depth(clamp(i0, ivec2(0), last)) + ao_load_depth(clamp(i0 + ivec2(1, 0), ivec2(0), last)) +
+           ao_load_depth(clamp(i0 + ivec2(0, 1), ivec2(0), last)) + ao_load_depth(clamp(i0 + ivec2(1, 1), ivec2(0), last));
+}
+
 // The sum of what the normal's fetches read at full-resolution pixel p: the G-buffer
 // texel, or the four neighbours' depths common/normals.glsl reconstructs it from.
 float ao_floor_normal_fetches(ivec2 p)
@@ -27,7 +39,7 @@ float ao_floor_normal_fetches(ivec2 p)
 }
 
 // The AO radius in full-resolution pixels at view depth view_z, as gtao.glsl computes it
-// (clip y = proj[1][1] * y / -z), capped at the screen's diagonal.
+// (clip y = proj[1][1] * y / -z), capped at half the screen's height.
 float ao_floor_radius_pixels(float view_z)
 {
     vec2 fsize = vec2(ao_depth_size());
@@ -35,7 +47,7 @@ float ao_floor_radius_pixels(float view_z)
 #if !defined(AO_PROJECTION_ORTHOGRAPHIC)
     pixels_per_unit /= max(-view_z, 1e-30);
 #endif
-    float radius_pixels = min(u.radius * pixels_per_unit, length(fsize));
+    float radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
     return ao_is_finite(radius_pixels) ? radius_pixels : 0.0;
 }
 

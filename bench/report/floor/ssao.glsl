@@ -1,6 +1,6 @@
 // floor/ssao.glsl -- the fetch floor of ssao.glsl: per pixel the centre depth, the normal's
-// fetches and the noise rotation, then one depth fetch per kernel sample at the kernel's
-// xy, rotated by the noise and scaled by the radius in pixels: where a sample of a surface
+// fetches and the noise rotation, then per kernel sample a depth fetch and a 2x2 gather
+// (depth.glsl's ao_depth_at) at the kernel's xy, rotated by the noise and scaled by the radius in pixels: where a sample of a surface
 // facing the camera projects. No tangent frame, no projection, no range check.
 
 float ao_pass(ivec2 target_pixel)
@@ -13,7 +13,7 @@ float ao_pass(ivec2 target_pixel)
     for (int i = 0; i < AO_SSAO_SAMPLES; ++i) {
         vec2 k = u.kernel[i].xy;
         vec2 offset = vec2(k.x * r.x - k.y * r.y, k.x * r.y + k.y * r.x) * radius_pixels;
-        sum += ao_floor_depth(ivec2(centre + offset));
+        sum += ao_floor_surface_fetches(centre + offset);
     }
     return fract(sum);
 }

@@ -123,10 +123,19 @@ inline std::string parse_error_line(const CLI::App& app, const CLI::ParseError& 
         if (!name.empty() && name[0] == '-' && what.find(name) != std::string::npos && !o->get_description().empty())
             return what + " (valid: " + name + " is: " + printable(o->get_description(), 160) + ")";
     }
+    // The options, as many as keep the line short; --help has them all.
     std::string options;
-    for (const CLI::Option* o : command->get_options())
-        if (!o->get_name().empty() && o->get_name()[0] == '-' && o->get_name() != "--help") options += (options.empty() ? "" : ", ") + o->get_name();
-    return what + " (valid: the options of " + (command == &app ? program : program + " " + command->get_name()) + ": " + options + ")";
+    for (const CLI::Option* o : command->get_options()) {
+        const std::string name = o->get_name();
+        if (name.empty() || name[0] != '-' || name == "--help") continue;
+        if (options.size() + name.size() > 120) {
+            options += ", ...";
+            break;
+        }
+        options += (options.empty() ? "" : ", ") + name;
+    }
+    const std::string full = command == &app ? program : program + " " + command->get_name();
+    return what + " (valid: the options of " + full + ": " + options + "; " + full + " --help)";
 }
 
 } // namespace aogen::tools

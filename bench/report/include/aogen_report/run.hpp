@@ -505,9 +505,7 @@ inline report_data run_report(const report_settings& settings)
     for (aogen::scenes::scene s : settings.scenes) {
         require_radius_works(s);
         if (settings.width > 0) s.camera.width = settings.width, s.camera.height = settings.height;
-        if (!aogen::scenes::shows_geometry(s, *aogen::scenes::make_tracer(s)))
-            aogen::fail(s.source, "shows no geometry: no pixel's ray hits anything between near and far",
-                        "valid: geometry in front of the camera");
+        aogen::scenes::require_scoreable(s, *aogen::scenes::make_tracer(s));
     }
     // Then: a missing device fails before any compiling or tracing.
     aogen::vulkan::context ctx(settings.device);

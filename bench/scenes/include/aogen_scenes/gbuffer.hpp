@@ -4,7 +4,9 @@
 //   render_gbuffer(scene, opts)  one primary ray per pixel through the pixel centre; per pixel
 //                                the raw depth a GPU would write, the normal and the world-
 //                                space hit position (for the ground truth).
-//   shows_geometry(scene, t)     whether any pixel's ray hits anything (first hit ends it)
+//   visible_geometry(scene, t)   how many pixels see geometry, and how far out it lies;
+//   require_scoreable(scene, t)  refuses a scene that shows nothing, or one too large for the
+//                                reference at its AO radius
 //   to_gbuffer<G>(g)             G{width, height, depth, normals}: aogen::vulkan::gbuffer
 //                                (this header does not include Vulkan).
 //   stored_depth(d, format)      the value a shader reads back after the GPU stored d in a
@@ -167,18 +169,42 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
     return g;
 }
 
-// Whether any pixel of `s`'s camera sees geometry of tracer `t` (the first hit ends the
-// search): a scene that shows nothing has no error to score, and a report refuses it
-// before it traces anything.
-inline bool shows_geometry(const scene& s, const truth::scene& t)
+// What `s`'s camera sees of tracer `t`: how many pixels hit geometry, and the largest
+// |coordinate| of a hit relative to the tracer's origin (what the reference's precision
+// depends on, truth::reliable_extent). A scene that shows nothing has no error to score,
+// and one too large for its radius no reference to trust: the report refuses both before
+// it traces anything.
+struct visibility {
+    size_t pixels = 0;
+    double extent = 0;
+};
+
+inline visibility visible_geometry(const scene& s, const truth::scene& t)
 {
     const primary_rays rays(s.camera);
+    visibility v;
     for (int y = 0; y < s.camera.height; ++y)
         for (int x = 0; x < s.camera.width; ++x) {
             const primary_ray r = rays.at(x, y);
-            if (t.intersect(r.org, r.dir, rays.tnear(), rays.tfar()).found) return true;
+            const truth::scene::hit h = t.intersect(r.org, r.dir, rays.tnear(), rays.tfar());
+            if (!h.found) continue;
+            ++v.pixels;
+            const dvec3 q = h.position - t.origin();
+            v.extent = std::max({v.extent, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
         }
-    return false;
+    return v;
+}
+
+// aogen::error naming `s.source` unless its camera sees some of its geometry, all of it near
+// enough for the reference to be traced reliably at the scene's AO radius.
+inline void require_scoreable(const scene& s, const truth::scene& t)
+{
+    const visibility v = visible_geometry(s, t);
+    if (v.pixels == 0) fail(s.source, "shows no geometry: no pixel's ray hits anything between near and far", "valid: geometry in front of the camera");
+    if (v.extent > truth::reliable_extent(s.ao_radius))
+        fail(s.source + ": ao_radius", format_number(s.ao_radius) + " is too small for a reliable reference " + format_number(v.extent) +
+                                           " from the camera (float geometry cannot place rays that short that far out)",
+             "valid: ao_radius >= " + format_number(v.extent / truth::reliable_extent(1.0)) + " for this view");
 }
 
 // Builds the scene's tracer and ray-casts the G-buffer.

@@ -15,6 +15,7 @@
 //                           binary visibility of geometry within world radius R, cosine-
 //                           weighted, no falloff (DESIGN.md, "Ground truth and oracles").
 //   surface_offset(q, R)    how far ao() lifts its rays' origin off the surface by default.
+//   reliable_extent(R)      how far from the origin a point may be for that lift to be reliable.
 //
 // USAGE
 //     aogen::truth::scene s({3e6 + 4, -5, 3});   // origin: the eye of a camera looking on
@@ -139,6 +140,15 @@ inline double surface_offset(vec3 relative_point, double radius)
     const double largest =
         std::max({1.0, std::abs(relative_point.x), std::abs(relative_point.y), std::abs(relative_point.z)});
     return std::min(4 * float_ulp_of_one * largest, 1e-3 * radius);
+}
+
+// The farthest a point may lie from the tracer's origin (its largest |coordinate|) for
+// ao() at radius R to lift its rays reliably: where the capped offset 10⁻³·R still clears
+// the worst float rounding √3·2⁻²³·M (HOW, above): M ≤ 10⁻³·R·2²³/√3 ≈ 4843·R. Past it the
+// reference is not to be trusted; callers refuse the radius (the report does, naming it).
+inline double reliable_extent(double radius)
+{
+    return 1e-3 * radius / (std::sqrt(3.0) * std::numeric_limits<float>::epsilon());
 }
 
 class scene {

@@ -1,0 +1,320 @@
+// aogen_report/suite.hpp — the stability suite: every variant on every stability case,
+// judged by the case's criterion (stability.hpp).
+//
+// WHAT
+//   run_suite(settings) runs, for each case and each variant:
+//     1. the variant adapted to the case's camera (its projection axis set to the camera's:
+//        an orthographic case runs the orthographic form of every variant), built in its
+//        diagnostic form (raw values before the guard, counted per pass);
+//     2. on the case's scene and on its twin: the G-buffer as the renderer stores it (with
+//        the case's faults planted, and its noise rotation if it fixes one), one run, the AO
+//        read back; the reference traced on the world G-buffer (grid² rays per pixel);
+//     3. with criterion.compare_depth, the same in standard, reversed and reversed-infinite
+//        depth, each compared pixel by pixel with standard depth;
+//   and judges it: raw NaN/Inf, raw excess beyond [0, 1], background exactly 1, output in
+//   [0, 1], RMSE against the twin's, the depth differences. The first check that fails
+//   decides ("NaN 3 in blur_x", "background 12 px not 1", "RMSE 0.21 > 1.5 × 0.06 + 0.03").
+//   Variants a case cannot run (a normal-buffer variant where the renderer has none) are
+//   listed, not judged. Pixels where a fault was planted are left out of the error (the
+//   shader must give them AO 1, checked like the background).
+//
+// USAGE
+//     aogen_report::suite_settings s;
+//     for (const std::string& n : aogen_report::builtin_case_names()) s.cases.push_back(aogen_report::builtin_case(n));
+//     s.variants = aogen_report::suite_variants();
+//     aogen_report::suite_data d = aogen_report::run_suite(s);   // d.failures(), d.cases[i].runs[j]
+#pragma once
+
+#include "metrics.hpp"
+#include "reference.hpp"
+#include "run.hpp"
+#include "settings.hpp"
+#include "stability.hpp"
+
+#include <aogen/matrix.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aogen_report {
+
+struct suite_settings {
+    std::vector<stability_case> cases;
+    std::vector<aogen::variant> variants;
+    int grid = 32; // reference rays per pixel: grid²
+    aogen::vulkan::device_options device;
+    std::function<void(const std::string&)> progress = [](const std::string&) {};
+};
+
+// One variant on one case.
+struct suite_run {
+    std::string variant;             // as run (adapted to the case's camera)
+    std::string skipped;             // why it did not run; "" when it ran
+    bool pass = false;
+    std::string decided_by;          // the first failing check, or what the error criterion read
+    aogen::vulkan::raw_counts raw;   // the case's scene, every pass
+    size_t background_pixels = 0, background_not_one = 0;
+    double rmse = 0, twin_rmse = 0, error_limit = 0;
+    double depth_max = 0, depth_mean = 0; // compare_depth only
+    bool ran() const { return skipped.empty(); }
+};
+
+struct suite_case_record {
+    stability_case c;
+    double truth_noise = 0;          // the case reference's RMS standard error
+    std::vector<suite_run> runs;     // one per settings variant
+};
+
+struct suite_data {
+    std::string device;
+    int grid = 0;
+    std::vector<std::string> variants; // the settings' variants, as given
+    std::vector<suite_case_record> cases;
+    size_t failures() const
+    {
+        size_t n = 0;
+        for (const suite_case_record& c : cases)
+            for (const suite_run& r : c.runs) n += r.ran() && !r.pass;
+        return n;
+    }
+};
+
+// The variants the suite runs by default: the default matrix and GTAO's one slice, one step.
+inline std::vector<aogen::variant> suite_variants()
+{
+    std::vector<aogen::variant> v = aogen::default_matrix();
+    for (const char* name : {"gtao-1x1-half-noblur-gbufworld-std-persp-cs", "gtao-1x1-full-noblur-gbufworld-std-persp-cs"})
+        aogen::append_unique(v, aogen::variant_from_name(name));
+    return v;
+}
+
+namespace detail {
+
+// `v` in the form a camera of this projection runs.
+inline aogen::variant adapted(aogen::variant v, const aogen::scenes::camera& c)
+{
+    v.projection = c.projection == aogen::scenes::projection_kind::orthographic ? aogen::projection_kind::orthographic
+                                                                                 : aogen::projection_kind::perspective;
+    return aogen::canonical(v);
+}
+
+// Diagnostic chains, compiled once per variant name for the whole suite.
+class chain_cache {
+public:
+    explicit chain_cache(aogen::vulkan::context& ctx) : ctx_(ctx) {}
+    const aogen::vulkan::chain& get(const aogen::variant& v)
+    {
+        const std::string name = aogen::to_name(v);
+        auto it = chains_.find(name);
+        if (it != chains_.end()) return *it->second;
+        return *chains_.emplace(name, std::make_unique<aogen::vulkan::chain>(ctx_, v, aogen::vulkan::chain_options{true}, &spirv_)).first->second;
+    }
+
+private:
+    aogen::vulkan::context& ctx_;
+    aogen::vulkan::spirv_cache spirv_;
+    std::map<std::string, std::unique_ptr<aogen::vulkan::chain>> chains_;
+};
+
+// A scene ready to run variants on: its tracer and its reference.
+struct prepared_scene {
+    aogen::scenes::scene scene;
+    std::unique_ptr<aogen::truth::scene> tracer;
+    reference truth;
+};
+
+inline prepared_scene prepare(const aogen::scenes::scene& s, int grid)
+{
+    prepared_scene p{s, aogen::scenes::make_tracer(s), {}};
+    aogen::scenes::gbuffer_options world;
+    world.use_scene_normals = false;
+    p.truth = trace_reference(*p.tracer, aogen::scenes::render_gbuffer(s, *p.tracer, world), s.ao_radius, grid);
+    return p;
+}
+
+// What one run read back: AO at the target's size, the full-resolution AO, raw counts, and
+// which target pixels the shader must leave at exactly 1 (background or a planted fault).
+struct one_run {
+    aogen::vulkan::chain_result out;
+    std::vector<float> full;
+    std::vector<uint8_t> must_be_one; // per target pixel
+    std::vector<uint8_t> faulted;     // per full-resolution pixel
+};
+
+inline size_t fault_pixel(const gbuffer_fault& f, int w, int h)
+{
+    const int x = std::min(w - 1, int(f.u * w)), y = std::min(h - 1, int(f.v * h));
+    return size_t(y) * w + x;
+}
+
+inline one_run run_once(aogen::vulkan::context& ctx, chain_cache& chains, const aogen::variant& v, const prepared_scene& p,
+                        const std::vector<gbuffer_fault>& faults, const std::optional<aogen::vec2>& noise_rotation)
+{
+    aogen::scenes::gbuffer_options o;
+    o.use_scene_normals = false;
+    o.normals = v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
+    o.face_camera = false;
+    const aogen::scenes::scene seen = for_variant(p.scene, v);
+    aogen::vulkan::gbuffer g = aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(aogen::scenes::render_gbuffer(seen, *p.tracer, o));
+    one_run r;
+    r.faulted.assign(size_t(g.width) * g.height, 0);
+    for (const gbuffer_fault& f : faults) {
+        const size_t i = fault_pixel(f, g.width, g.height);
+        r.faulted[i] = 1;
+        if (f.what == gbuffer_fault::kind::nan_depth) g.depth[i] = std::nanf("");
+        else for (int k = 0; k < 3; ++k) g.normals[4 * i + k] = 0.0f;
+    }
+    const aogen::vulkan::gpu_gbuffer uploaded(ctx, g);
+    const auto [tw, th] = aogen::vulkan::target_size(v, g.width, g.height);
+    aogen::vulkan::chain_inputs in = aogen::vulkan::inputs_for(v, default_settings(v, p.scene), tw, th);
+    if (noise_rotation) {
+        const aogen::vec2 n = *noise_rotation;
+        for (size_t i = 0; i + 16 <= in.noise.size(); i += 16) {
+            const float texel[4] = {n.x, n.y, 0.0f, 1.0f};
+            std::memcpy(in.noise.data() + i, texel, sizeof texel);
+        }
+    }
+    const aogen::vulkan::chain& c = chains.get(v);
+    r.out = aogen::vulkan::bound_chain(ctx, c.passes(), uploaded, in, tw, th).run_once();
+    r.full = upsample(r.out.ao, tw, th, tw == g.width ? 1 : 2, g.width, g.height);
+    // A target pixel reads full pixel (x·k, y·k), clamped (common/depth.glsl's ao_full_pixel).
+    const int k = v.half_resolution ? 2 : 1;
+    r.must_be_one.assign(size_t(tw) * th, 0);
+    for (int y = 0; y < th; ++y)
+        for (int x = 0; x < tw; ++x) {
+            const size_t full = size_t(std::min(y * k, g.height - 1)) * g.width + std::min(x * k, g.width - 1);
+            const bool faulted_depth = r.faulted[full] && !std::isfinite(g.depth[full]);
+            const bool faulted_normal = r.faulted[full] && v.normals != aogen::normal_source::reconstructed && std::isfinite(g.depth[full]);
+            // A zero normal gives AO 1 in the AO pass; a blur may still mix it with its neighbours.
+            const bool ao_pass_only = passes(v).size() == 1;
+            r.must_be_one[size_t(y) * tw + x] = !p.truth.valid[full] || faulted_depth || (faulted_normal && ao_pass_only);
+        }
+    return r;
+}
+
+// The reference's valid pixels without the faulted ones (the shader answers 1 there by design).
+inline std::vector<uint8_t> scored_pixels(const reference& truth, const std::vector<uint8_t>& faulted)
+{
+    std::vector<uint8_t> valid = truth.valid;
+    for (size_t i = 0; i < valid.size(); ++i) valid[i] = valid[i] && !faulted[i];
+    return valid;
+}
+
+// The twin's pixels its error is taken over: every valid one, or those in the case's window.
+inline std::vector<uint8_t> twin_scored_pixels(const stability_case& c, const reference& twin)
+{
+    std::vector<uint8_t> valid = twin.valid;
+    if (!c.twin_window) return valid;
+    const auto [x0, y0] = *c.twin_window;
+    for (int y = 0; y < twin.height; ++y)
+        for (int x = 0; x < twin.width; ++x) {
+            const bool inside = x >= x0 && y >= y0 && x < x0 + c.scene.camera.width && y < y0 + c.scene.camera.height;
+            valid[size_t(y) * twin.width + x] &= uint8_t(inside);
+        }
+    return valid;
+}
+
+inline std::string fixed_text(double x, int digits)
+{
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*f", digits, x);
+    return b;
+}
+
+// Judges `r` by the case's criterion; the first failing check decides.
+inline void judge(suite_run& r, const stability_criterion& k, const std::vector<std::string>& pass_names,
+                  const std::vector<aogen::vulkan::raw_counts>& per_pass)
+{
+    for (size_t i = 0; i < per_pass.size(); ++i) {
+        const aogen::vulkan::raw_counts& c = per_pass[i];
+        if (c.nan || c.inf) {
+            r.decided_by = "raw NaN " + std::to_string(c.nan) + ", Inf " + std::to_string(c.inf) + " in " + pass_names[i];
+            return;
+        }
+        if (c.out_of_range() && c.max_excess > k.max_excess) {
+            char b[128];
+            std::snprintf(b, sizeof b, "raw %llu values outside [0, 1] (by up to %.3g) in %s", static_cast<unsigned long long>(c.out_of_range()),
+                          double(c.max_excess), pass_names[i].c_str());
+            r.decided_by = b;
+            return;
+        }
+    }
+    if (r.background_not_one) {
+        r.decided_by = std::to_string(r.background_not_one) + " of " + std::to_string(r.background_pixels) + " background/fault pixels not exactly 1";
+        return;
+    }
+    if (k.compare_depth && (r.depth_max > k.depth_max || r.depth_mean > k.depth_mean)) {
+        r.decided_by = "depth conventions differ by up to " + fixed_text(r.depth_max, 4) + " (mean " + fixed_text(r.depth_mean, 5) + ")";
+        return;
+    }
+    r.error_limit = k.error_ratio * r.twin_rmse + k.error_slack;
+    r.pass = r.rmse <= r.error_limit;
+    r.decided_by = "RMSE " + fixed_text(r.rmse, 4) + (r.pass ? " <= " : " > ") + fixed_text(k.error_ratio, 2) + " × twin " +
+                   fixed_text(r.twin_rmse, 4) + " + " + fixed_text(k.error_slack, 3);
+}
+
+} // namespace detail
+
+inline suite_data run_suite(const suite_settings& settings)
+{
+    if (settings.cases.empty()) aogen::fail("stability suite", "no cases", "valid: at least one case");
+    if (settings.variants.empty()) aogen::fail("stability suite", "no variants", "valid: at least one variant");
+    // What makes a case impossible to score, before anything runs.
+    for (const stability_case& c : settings.cases)
+        for (const aogen::scenes::scene* s : {&c.scene, &c.twin}) {
+            require_radius_works(*s);
+            aogen::scenes::require_scoreable(*s, *aogen::scenes::make_tracer(*s));
+        }
+    aogen::vulkan::context ctx(settings.device);
+    detail::chain_cache chains(ctx);
+    suite_data out;
+    out.device = ctx.device_name();
+    out.grid = settings.grid;
+    for (const aogen::variant& v : settings.variants) out.variants.push_back(aogen::to_name(v));
+
+    for (size_t ci = 0; ci < settings.cases.size(); ++ci) {
+        const stability_case& c = settings.cases[ci];
+        settings.progress("[case " + std::to_string(ci + 1) + "/" + std::to_string(settings.cases.size()) + "] " + c.name);
+        const detail::prepared_scene scene = detail::prepare(c.scene, settings.grid), twin = detail::prepare(c.twin, settings.grid);
+        suite_case_record record{c, scene.truth.noise_rms, {}};
+        for (const aogen::variant& base : settings.variants) {
+            suite_run r;
+            const aogen::variant v = detail::adapted(base, c.scene.camera), vt = detail::adapted(base, c.twin.camera);
+            r.variant = aogen::to_name(v);
+            r.skipped = cannot_run(v, c.scene);
+            if (r.skipped.empty()) r.skipped = cannot_run(vt, c.twin);
+            if (!r.ran()) {
+                record.runs.push_back(r);
+                continue;
+            }
+            const detail::one_run a = detail::run_once(ctx, chains, v, scene, c.faults, c.noise_rotation);
+            const detail::one_run b = detail::run_once(ctx, chains, vt, twin, {}, std::nullopt);
+            for (const aogen::vulkan::raw_counts& k : a.out.raw) r.raw += k;
+            for (size_t i = 0; i < a.must_be_one.size(); ++i)
+                if (a.must_be_one[i]) r.background_pixels += 1, r.background_not_one += a.out.ao[i] != 1.0f;
+            r.rmse = compare(a.full, scene.truth.ao, detail::scored_pixels(scene.truth, a.faulted)).rmse;
+            r.twin_rmse = compare(b.full, twin.truth.ao, detail::twin_scored_pixels(c, twin.truth)).rmse;
+            if (c.criterion.compare_depth)
+                for (aogen::depth_convention d : {aogen::depth_convention::standard, aogen::depth_convention::reversed, aogen::depth_convention::reversed_infinite}) {
+                    aogen::variant vd = v;
+                    vd.depth = d;
+                    if (vd.depth == v.depth) continue;
+                    const detail::one_run o = detail::run_once(ctx, chains, vd, scene, c.faults, c.noise_rotation);
+                    double sum = 0;
+                    for (size_t i = 0; i < o.out.ao.size(); ++i) {
+                        const double diff = std::fabs(double(o.out.ao[i]) - a.out.ao[i]);
+                        r.depth_max = std::max(r.depth_max, diff), sum += diff;
+                    }
+                    r.depth_mean = std::max(r.depth_mean, sum / double(std::max<size_t>(1, o.out.ao.size())));
+                }
+            detail::judge(r, c.criterion, a.out.passes, a.out.raw);
+            record.runs.push_back(r);
+        }
+        out.cases.push_back(std::move(record));
+    }
+    return out;
+}
+
+} // namespace aogen_report

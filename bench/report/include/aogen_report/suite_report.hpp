@@ -1,0 +1,121 @@
+// aogen_report/suite_report.hpp — the stability suite's report.md and results.json.
+//
+//     std::string md = aogen_report::suite_markdown(d, command);
+//     std::string json = aogen_report::suite_json(d, command);
+//
+// report.md: how to read it; the cases (what each stresses, its criterion); a table of
+// variants × cases, ✓ or ✗ per cell, numbered columns so it fits; then every failure with
+// the figure that decided it, and what could not run. results.json: every run's numbers:
+//   {"aogen_report": 2, "suite": "stability", "device", "command", "rays_per_pixel",
+//    "failures", "cases": [{name, about, source, truth_noise_rms,
+//      criterion: {error_ratio, error_slack, max_excess, compare_depth, depth_max, depth_mean},
+//      runs: [{variant, skipped | {pass, decided_by, rmse, twin_rmse, error_limit,
+//              raw: {nan, inf, below_zero, above_one, max_excess},
+//              background_pixels, background_not_one, depth_max, depth_mean}}]}]}
+#pragma once
+
+#include "number_text.hpp"
+#include "suite.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+namespace aogen_report {
+
+inline std::string suite_json(const suite_data& d, const std::string& command)
+{
+    nlohmann::json j;
+    j["aogen_report"] = 2;
+    j["suite"] = "stability";
+    j["device"] = d.device;
+    j["command"] = command;
+    j["rays_per_pixel"] = d.grid * d.grid;
+    j["failures"] = d.failures();
+    j["cases"] = nlohmann::json::array();
+    for (const suite_case_record& c : d.cases) {
+        const stability_criterion& k = c.c.criterion;
+        nlohmann::json runs = nlohmann::json::array();
+        for (const suite_run& r : c.runs) {
+            nlohmann::json e{{"variant", r.variant}};
+            if (!r.ran()) e["skipped"] = r.skipped;
+            else {
+                e["pass"] = r.pass;
+                e["decided_by"] = r.decided_by;
+                e["rmse"] = r.rmse, e["twin_rmse"] = r.twin_rmse, e["error_limit"] = r.error_limit;
+                e["raw"] = {{"nan", r.raw.nan}, {"inf", r.raw.inf}, {"below_zero", r.raw.below_zero}, {"above_one", r.raw.above_one},
+                            {"max_excess", r.raw.max_excess}};
+                e["background_pixels"] = r.background_pixels, e["background_not_one"] = r.background_not_one;
+                e["depth_max"] = r.depth_max, e["depth_mean"] = r.depth_mean;
+            }
+            runs.push_back(e);
+        }
+        j["cases"].push_back({{"name", c.c.name},
+                              {"about", c.c.about},
+                              {"source", c.c.source},
+                              {"truth_noise_rms", c.truth_noise},
+                              {"criterion", {{"error_ratio", k.error_ratio}, {"error_slack", k.error_slack}, {"max_excess", k.max_excess},
+                                             {"compare_depth", k.compare_depth}, {"depth_max", k.depth_max}, {"depth_mean", k.depth_mean}}},
+                              {"runs", runs}});
+    }
+    return j.dump(2) + "\n";
+}
+
+inline std::string suite_markdown(const suite_data& d, const std::string& command)
+{
+    using detail::fixed;
+    std::ostringstream md;
+    size_t runs = 0;
+    for (const suite_case_record& c : d.cases)
+        for (const suite_run& r : c.runs) runs += r.ran();
+    md << "# aogen stability suite\n\n";
+    md << "- Device: **" << d.device << "**\n- " << d.cases.size() << " cases × " << d.variants.size() << " variants: " << runs << " runs, **"
+       << d.failures() << " failed**\n- Reference: Embree, " << d.grid * d.grid << " rays per pixel\n- Command: `" << command << "`\n\n";
+    md << "**How to read it.** Each case is a scene at an extreme and its benign twin (aogen_report/stability.hpp). A run passes "
+          "when no pass computed a NaN or an infinity (raw values, before the guard that keeps them from the output), no raw value "
+          "lies outside [0, 1] by more than rounding, every background pixel (and every planted fault) is exactly 1, the depth "
+          "conventions agree where the case compares them, and the RMSE against the ray-traced reference is at most the case's "
+          "ratio times the same variant's RMSE on the twin plus a slack. Each variant runs in the projection of the case's camera.\n\n";
+
+    md << "## Cases\n\n| # | case | stresses | criterion | reference noise |\n|---:|---|---|---|---:|\n";
+    for (size_t i = 0; i < d.cases.size(); ++i) {
+        const stability_criterion& k = d.cases[i].c.criterion;
+        md << "| " << i + 1 << " | " << d.cases[i].c.name << " | " << d.cases[i].c.about << " | RMSE ≤ " << fixed(k.error_ratio, 2) << " × twin + "
+           << fixed(k.error_slack, 3) << (k.compare_depth ? "; depth Δ ≤ " + fixed(k.depth_max, 4) : "") << " | " << fixed(d.cases[i].truth_noise, 4)
+           << " |\n";
+    }
+
+    md << "\n## Variants × cases\n\n✓ passed, ✗ failed, – could not run (columns: the cases' numbers above).\n\n| variant |";
+    for (size_t i = 0; i < d.cases.size(); ++i) md << " " << i + 1 << " |";
+    md << " failed |\n|---|";
+    for (size_t i = 0; i < d.cases.size(); ++i) md << ":-:|";
+    md << "---:|\n";
+    for (size_t v = 0; v < d.variants.size(); ++v) {
+        size_t failed = 0;
+        md << "| `" << d.variants[v] << "` |";
+        for (const suite_case_record& c : d.cases) {
+            const suite_run& r = c.runs[v];
+            md << " " << (!r.ran() ? "–" : r.pass ? "✓" : "✗") << " |";
+            failed += r.ran() && !r.pass;
+        }
+        md << " " << failed << " |\n";
+    }
+
+    md << "\n## Failures\n\n";
+    if (d.failures() == 0) md << "None.\n";
+    for (const suite_case_record& c : d.cases)
+        for (const suite_run& r : c.runs)
+            if (r.ran() && !r.pass) md << "- **" << c.c.name << "**, `" << r.variant << "`: " << r.decided_by << "\n";
+
+    std::map<std::string, size_t> skipped;
+    for (const suite_case_record& c : d.cases)
+        for (const suite_run& r : c.runs)
+            if (!r.ran()) ++skipped[c.c.name + ": " + r.skipped];
+    if (!skipped.empty()) {
+        md << "\n## Not run\n\n";
+        for (const auto& [why, n] : skipped) md << "- " << why << " (" << n << (n == 1 ? " variant" : " variants") << ")\n";
+    }
+    return md.str();
+}
+
+} // namespace aogen_report
