@@ -236,7 +236,7 @@ int stability_main(const std::string& cases, const std::string& variants, int ra
     set.commit();
     progress("wrote " + (std::filesystem::path(out) / "report.md").string() + ": " + std::to_string(d.failures()) + " failed runs");
     if (check && d.failures() > 0)
-        aogen::fail("stability suite", std::to_string(d.failures()) + " runs failed (see " + (std::filesystem::path(out) / "report.md").string() + ")",
+        aogen::fail("stability suite", std::to_string(d.failures()) + (d.failures() == 1 ? " run" : " runs") + " failed (see " + (std::filesystem::path(out) / "report.md").string() + ")",
                     "valid: every case passing");
     return 0;
 }

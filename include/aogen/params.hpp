@@ -385,7 +385,11 @@ struct blur_params {
 
     // depth == linear: weight · exp(−|Δz_view| · linear_sharpness), per world unit.
     // 10 (ours): a step of 0.1 world units gets weight e^-1 ≈ 0.37. 0 turns it off.
-    static constexpr float_range linear_sharpness_range{0.0f, 1e6f, false};
+    // A sharpness is an inverse length, so a scene in micrometres needs one in the
+    // millions: 10 per unit scaled to an AO radius of 1e-6 is 1e7. The range reaches 1e12
+    // (a radius of 1e-11); the product with |Δz| can only overflow to +inf, whose weight
+    // is 0.
+    static constexpr float_range linear_sharpness_range{0.0f, 1e12f, false};
     float linear_sharpness = 10.0f;
 };
 

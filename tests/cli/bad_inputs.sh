@@ -700,7 +700,7 @@ group_report() {
   new_case ao-radius-1e308
   scene "$floor" ', "ao_radius": 1e308'
   expect_fail -s 2 -m "$(field s.json ao_radius)" -- "${rep[@]}" --scenes s.json --out out
-  new_case ao-radius-1e-6 # the blur's sharpness 10/R leaves its range
+  new_case ao-radius-1e-6 # too small for a reference of a floor reaching the horizon
   scene "$floor" ', "ao_radius": 1e-6'
   expect_fail -s 2 -m "$(field s.json ao_radius)" -- "$report" "${small[@]}" --variants gtao-1x2-half-bilateral-gbufworld-std-persp-cs --scenes s.json --out out
 

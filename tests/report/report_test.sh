@@ -9,6 +9,10 @@
 #           that scene, marked partial.
 #   errors  bad arguments: one line on stderr naming what is wrong, non-zero exit,
 #           nothing written.
+#   suite   the stability suite, every built-in case on every default variant, with
+#           --check: it passes, its results hold the four defects issue 11 found fixed
+#           (absolute figures, which the old shaders miss), and a planted failing case
+#           file makes --check exit 1 and the report name it.
 set -uo pipefail
 report=$(realpath "$1") case=$2
 work=$(mktemp -d)
@@ -102,7 +106,54 @@ errors)
   expect_error "too few rays" '--rays: 100 is not a valid ray count \(valid: the square of an even number' --rays 100
   echo '{"geometry": [' >"$work/broken.json"
   expect_error "malformed scene" 'broken.json: is not valid JSON' --scenes "$work/broken.json"
+  expect_error "unknown stability case" "built-in stability case: 'fov_1000' is not known \\(valid: grazing_floor, " --suite stability --cases fov_1000
+  expect_error "suite option without --suite" "--check: goes with --suite stability" --check
+  expect_error "report option with --suite" "--size: is an option of the error-against-time report" --suite stability --size 64x36
+  echo '{"name": "x", "scene": {}, "twin": {}, "extra": 1}' >"$work/case.json"
+  expect_error "unknown key in a case file" 'case.json.*extra' --suite stability --cases "$work/case.json"
   expect_error "no such device" 'no-such-gpu' --device no-such-gpu --scenes crease --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --size 16x16 --rays 1024
+  ;;
+suite)
+  "$report" --suite stability --check --out "$work/s" 2>"$work/progress" || { fail "the stability suite failed"; tail -3 "$work/progress"; }
+  python3 - "$work/s/results.json" <<'PY' || fail "stability results.json checks"
+import json, sys
+r = json.load(open(sys.argv[1]))
+cases = {c["name"]: c for c in r["cases"]}
+assert len(cases) == 30 and r["failures"] == 0, (len(cases), r["failures"])
+for c in cases.values():
+    assert len(c["runs"]) >= 70, (c["name"], len(c["runs"]))
+    for run in c["runs"]:
+        assert run["pass"] and run["raw"]["nan"] == 0 and run["raw"]["inf"] == 0, (c["name"], run["variant"])
+        assert run["background_not_one"] == 0 and run["rmse"] <= run["error_limit"], (c["name"], run)
+def runs(case, prefix):
+    return [x for x in cases[case]["runs"] if x["variant"].startswith(prefix)]
+# The defects, in absolute figures (the old shaders: 0.37, 0.28, 0.21, and a refusal).
+assert max(x["rmse"] for x in runs("fov_175", "gtao")) < 0.05, "GTAO darkens the open floor at 175 degrees"
+assert max(x["rmse"] for x in runs("fov_120", "gtao")) < 0.08, "GTAO darkens the open floor at 120 degrees"
+assert max(x["rmse"] for x in runs("image_8x8", "gtao-")) < 0.12, "half-resolution GTAO too dark at 8x8"
+for case in ("radius_past_screen", "radius_huge"):  # no worse than the largest radius that fits the screen
+    for x in runs(case, ""):
+        assert x["rmse"] <= 1.25 * x["twin_rmse"] + 0.01, (case, x["variant"], x["rmse"], x["twin_rmse"])
+assert len(runs("sub_millimetre", "")) >= 70  # an AO radius of 1e-6 runs (it was refused)
+assert all(x["depth_max"] <= 3 / 255 for x in cases["depth_conventions"]["runs"])
+PY
+  grep -q "| 30 | sub_millimetre |" "$work/s/report.md" || fail "report.md lacks the case table"
+  grep -q "^None\.$" "$work/s/report.md" || fail "report.md lists failures"
+  # A planted failure: a criterion no variant can meet (RMSE <= 0) fails --check, named.
+  cat >"$work/impossible.json" <<'JSON'
+{"name": "impossible", "about": "a planted failure",
+ "scene": {"name": "box", "geometry": [{"type": "box", "min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 1]}, {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}],
+           "camera": {"eye": [2.5, -3.5, 2.2], "target": [0, 0, 0.4], "up": [0, 0, 1], "width": 32, "height": 18}, "ao_radius": 0.5},
+ "twin": {"name": "box", "geometry": [{"type": "box", "min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 1]}, {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}],
+          "camera": {"eye": [2.5, -3.5, 2.2], "target": [0, 0, 0.4], "up": [0, 0, 1], "width": 32, "height": 18}, "ao_radius": 0.5},
+ "criterion": {"error_ratio": 0, "error_slack": 0}}
+JSON
+  "$report" --suite stability --check --cases grazing_floor,"$work/impossible.json" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs \
+    --out "$work/f" 2>"$work/stderr" && fail "--check exited 0 with a failing case"
+  grep -q "stability suite: 1 run failed" "$work/stderr" || { fail "--check's message:"; cat "$work/stderr"; }
+  grep -q "impossible.*gtao-1x2-half-noblur" "$work/f/report.md" || fail "report.md does not name the failing case and variant"
+  "$report" --suite stability --cases "$work/impossible.json" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --out "$work/g" 2>/dev/null ||
+    fail "without --check a failing case must not fail the run"
   ;;
 *) echo "unknown case $case"; exit 2 ;;
 esac
