@@ -45,6 +45,7 @@ struct list_command {
             {"point-cloud fallback", "off, on (ssao only)", "-pc"},
             {"range check", names::list(ssao_range_check_names) + " (ssao only)", "-rc004 for seed004"},
             {"output", names::list(ssao_output_names) + " (ssao only)", "-powint"},
+            {"precision", "fp32, fp16 (16-bit AO-pass arithmetic; spv, hlsl, msl targets)", "-fp16"},
             {"workgroup", "1..32 x 1..32, at most 1024 (compute; default 8x8)", "-wg<X>x<Y>"},
         };
         size_t axis_width = 4, values_width = 6;

@@ -105,42 +105,45 @@ float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float ma
 // from V, positive toward `side`, in [-pi/2, pi/2]. V and `side` are unit and
 // perpendicular, an orthonormal basis of the slice plane, so n_p = x V + y side with
 // x = dot(n, V), y = dot(n, side); n faces V, so x >= 0. (0, 0) when the normal is
-// (nearly) perpendicular to the slice plane.
-vec2 ao_gtao_projected_normal(vec3 n, vec3 V, vec3 side)
+// (nearly) perpendicular to the slice plane. From here on a slice's arithmetic is ao_half
+// (16-bit with the fp16 axis): angles and cosines in [-pi, pi], where a half's 4.9e-4
+// relative error is well below what the 8-bit output shows.
+ao_half2 ao_gtao_projected_normal(vec3 n, vec3 V, vec3 side)
 {
     float x = dot(n, V);
     float y = dot(n, side);
     float n_length = sqrt(x * x + y * y);
-    if (!(n_length > 1e-6)) return vec2(0.0);
+    if (!(n_length > 1e-6)) return ao_half2(0.0);
     // atan(y, x) is undefined at x = 0 = y; x <= 0 (rounding) is a normal in the view plane.
-    float n_angle = x > 0.0 ? atan(y, x) : (y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
-    return vec2(n_length, clamp(n_angle, -AO_HALF_PI, AO_HALF_PI));
+    ao_half n_angle = x > 0.0 ? atan(ao_half(y), ao_half(x)) : ao_half(y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
+    return ao_half2(n_length, clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI)));
 }
 
 // a(h, n) = integral from 0 to h of cos(t - n) |sin t| dt (the header's derivation).
-float ao_gtao_arc(float h, float n)
+ao_half ao_gtao_arc(ao_half h, ao_half n)
 {
-    return 0.25 * (-cos(2.0 * h - n) + cos(n) + 2.0 * h * sin(n));
+    return ao_half(0.25) * (-cos(ao_half(2.0) * h - n) + cos(n) + ao_half(2.0) * h * sin(n));
 }
 
 // The slice integral a(h-, n) + a(h+, n), without the |n_p| factor, from the horizon
 // cosines of the two sides (-1: no horizon) and the projected normal's angle n.
-float ao_gtao_slice_integral(float n_angle, float cos_behind, float cos_ahead)
+ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_ahead)
 {
-    float n = clamp(n_angle, -AO_HALF_PI, AO_HALF_PI);
+    const ao_half half_pi = ao_half(AO_HALF_PI);
+    ao_half n = clamp(n_angle, -half_pi, half_pi);
     // ao_is_finite first: clamp() of a NaN is undefined; a NaN horizon is no horizon.
-    float c_ahead = ao_is_finite(cos_ahead) ? clamp(cos_ahead, -1.0, 1.0) : -1.0;
-    float c_behind = ao_is_finite(cos_behind) ? clamp(cos_behind, -1.0, 1.0) : -1.0;
+    ao_half c_ahead = ao_is_finite(float(cos_ahead)) ? clamp(cos_ahead, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
+    ao_half c_behind = ao_is_finite(float(cos_behind)) ? clamp(cos_behind, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
     // h+ in [0, pi], h- in [-pi, 0]; the clamp keeps h- <= 0 <= h+, as n +- pi/2 straddle 0.
-    float h_ahead = clamp(acos(c_ahead), n - AO_HALF_PI, n + AO_HALF_PI);
-    float h_behind = clamp(-acos(c_behind), n - AO_HALF_PI, n + AO_HALF_PI);
+    ao_half h_ahead = clamp(acos(c_ahead), n - half_pi, n + half_pi);
+    ao_half h_behind = clamp(-acos(c_behind), n - half_pi, n + half_pi);
     return ao_gtao_arc(h_behind, n) + ao_gtao_arc(h_ahead, n);
 }
 
 // The slice integral of an unoccluded slice, h+- = n +- pi/2: cos n + n sin n, in [1, pi/2].
-float ao_gtao_slice_unoccluded(float n_angle)
+ao_half ao_gtao_slice_unoccluded(ao_half n_angle)
 {
-    float n = clamp(n_angle, -AO_HALF_PI, AO_HALF_PI);
+    ao_half n = clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
     return cos(n) + n * sin(n);
 }
 
@@ -181,9 +184,11 @@ float ao_pass(ivec2 target_pixel)
         vec3 dir_view = vec3(dir.x, -dir.y, 0.0);
         vec3 side = ao_safe_normalize(dir_view - V * dot(dir_view, V), vec3(0.0)); // in the slice plane, perpendicular to V
         if (dot(side, side) < 0.5) continue;
-        vec2 projected = ao_gtao_projected_normal(n, V, side); // (|n_p|, n)
-        if (!(projected.x > 0.0)) continue; // the normal is perpendicular to the slice
+        ao_half2 projected = ao_gtao_projected_normal(n, V, side); // (|n_p|, n)
+        if (!(projected.x > ao_half(0.0))) continue; // the normal is perpendicular to the slice
 
+        // The horizons: the highest cosine on each side (in float: a max of floats; each
+        // cosine comes from 32-bit view positions, the one place precision decides).
         float cos_ahead = -1.0;
         float cos_behind = -1.0;
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
@@ -191,8 +196,9 @@ float ao_pass(ivec2 target_pixel)
             cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, p, P, V, max_distance));
             cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, p, P, V, max_distance));
         }
-        visibility_sum += projected.x * ao_gtao_slice_integral(projected.y, cos_behind, cos_ahead);
-        unoccluded_sum += projected.x * ao_gtao_slice_unoccluded(projected.y);
+        ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
+        visibility_sum += float(projected.x * integral);
+        unoccluded_sum += float(projected.x * ao_gtao_slice_unoccluded(projected.y));
     }
     float visibility = unoccluded_sum > 0.0 ? clamp(visibility_sum / unoccluded_sum, 0.0, 1.0) : 1.0;
     return visibility > 0.0 ? pow(visibility, u.strength) : 0.0;

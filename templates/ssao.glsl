@@ -50,17 +50,19 @@
 // The tangent frame (columns t, b, n) around unit normal n, its tangent the part of the
 // noise vector (r, 0) perpendicular to n. When (r, 0) is (anti-)parallel to n -- a wall
 // seen edge-on whose normal points along the noise vector -- a coordinate axis not
-// parallel to n takes its place.
-mat3 ao_ssao_frame(vec3 n, vec2 r)
+// parallel to n takes its place. Unit vectors: ao_half (16-bit with the fp16 axis) holds
+// them to 4.9e-4, a thousandth of the radius once scaled.
+ao_half3x3 ao_ssao_frame(vec3 normal, vec2 r)
 {
-    vec3 noise = vec3(r, 0.0);
-    vec3 t = noise - n * dot(noise, n);
-    if (!(dot(t, t) > 1e-4)) {
-        vec3 axis = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+    ao_half3 n = ao_half3(normal);
+    ao_half3 noise = ao_half3(r, 0.0);
+    ao_half3 t = noise - n * dot(noise, n);
+    if (!(dot(t, t) > ao_half(1e-4))) {
+        ao_half3 axis = abs(n.x) < ao_half(0.9) ? ao_half3(1.0, 0.0, 0.0) : ao_half3(0.0, 1.0, 0.0);
         t = axis - n * dot(axis, n); // |t|^2 >= 0.19
     }
     t = normalize(t);
-    return mat3(t, cross(n, t), n);
+    return ao_half3x3(t, cross(n, t), n);
 }
 
 // The radius a pixel at view-space P can use: u.radius, but at most the world size of half
@@ -80,17 +82,17 @@ float ao_ssao_radius(vec3 P)
 }
 
 // The weight of an occluded sample whose scene point is |dz| away in view depth, for a
-// hemisphere of `radius`.
-float ao_ssao_range_weight(float abs_dz, float radius)
+// hemisphere of `radius`: the ratio in float, the smoothstep of it (in [0, 1]) in ao_half.
+ao_half ao_ssao_range_weight(float abs_dz, float radius)
 {
 #if defined(AO_RANGE_CHECK_TAOS)
     // 1 - smoothstep(0, radius, |dz|), written so that radius 0 is a step, not 0 / 0.
-    if (!(abs_dz < radius)) return 0.0;
-    return 1.0 - smoothstep(0.0, 1.0, abs_dz / radius); // radius > abs_dz >= 0
+    if (!(abs_dz < radius)) return ao_half(0.0);
+    return ao_half(1.0) - smoothstep(ao_half(0.0), ao_half(1.0), ao_half(abs_dz / radius)); // radius > abs_dz >= 0
 #else
     // smoothstep(0, 1, radius / |dz|): 1 for |dz| <= radius, |dz| = 0 included.
-    if (abs_dz <= radius) return 1.0;
-    return smoothstep(0.0, 1.0, radius / max(abs_dz, 1e-30));
+    if (abs_dz <= radius) return ao_half(1.0);
+    return smoothstep(ao_half(0.0), ao_half(1.0), ao_half(radius / max(abs_dz, 1e-30)));
 #endif
 }
 
@@ -108,7 +110,7 @@ float ao_pass(ivec2 target_pixel)
     vec3 V = ao_view_direction(P);
     vec3 n;
     if (!ao_surface_normal(p, P, V, n)) return 1.0;
-    mat3 tbn = ao_ssao_frame(n, ao_noise_rotation(target_pixel));
+    ao_half3x3 tbn = ao_ssao_frame(n, ao_noise_rotation(target_pixel));
     float radius = ao_ssao_radius(P);
     float bias = u.bias * (radius / u.radius); // a capped hemisphere keeps the bias's share of it
 
@@ -117,7 +119,11 @@ float ao_pass(ivec2 target_pixel)
     float occlusion = 0.0;
     float judged = 0.0; // samples that land on screen, in front of the camera
     for (int i = 0; i < AO_SSAO_SAMPLES; ++i) {
+#if defined(AO_FP16)
+        vec3 S = P + vec3(tbn * ao_half3(u.kernel[i].xyz)) * radius; // the unit-scale rotation in 16 bits, the scale in 32
+#else
         vec3 S = P + tbn * (u.kernel[i].xyz * radius);
+#endif
         vec4 clip = u.proj * vec4(S, 1.0);
         if (!(clip.w > 1e-30)) continue; // behind the camera (perspective)
         vec2 ndc = clip.xy / clip.w;
@@ -134,7 +140,7 @@ float ao_pass(ivec2 target_pixel)
         if (q == p) continue; // its own texel: a self-comparison that can only measure depth quantization
         float scene_z = ao_view_z(at / fsize, scene_depth);
         if (scene_z > S.z + bias && ao_is_finite(scene_z))
-            occlusion += ao_ssao_range_weight(abs(P.z - scene_z), radius);
+            occlusion += float(ao_ssao_range_weight(abs(P.z - scene_z), radius));
     }
     float occluded = judged > 0.0 ? occlusion / judged : 0.0;
 #if defined(AO_OUTPUT_STRENGTH)

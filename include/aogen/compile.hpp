@@ -77,6 +77,10 @@
 //   - glsl, essl: vertex.support_nonzero_base_instance = false, so that no hidden
 //     SPIRV_Cross_BaseInstance uniform appears in the output (gl_InstanceIndex becomes
 //     gl_InstanceID: AO draws one instance, at base 0).
+//   - glsl, essl: SPIR-V with the Float16 capability (fp16 variants) is an aogen::error:
+//     SPIRV-Cross writes OpenGL's 16-bit floats only through GL_AMD_gpu_shader_half_float
+//     or GL_NV_gpu_shader5 (#error otherwise), which no portable shader may assume. HLSL
+//     gets min16float, MSL half.
 //   - hlsl50 / hlsl60: shader_model 50 / 60 (SPIRV-Cross's default is 30, where compute
 //     shaders and UAVs do not exist). Registers come from the bindings (b/t/s/u N); SM 5.1+
 //     adds `space<set>`; SM 5.0 has no spaces, so there bindings must be distinct across
@@ -426,6 +430,11 @@ inline std::string cross_compile(const std::vector<uint32_t>& spirv, shader_stag
         case target::glsl:
         case target::essl: {
             spirv_cross::CompilerGLSL glsl(spirv);
+            const auto& caps = glsl.get_declared_capabilities();
+            if (std::find(caps.begin(), caps.end(), spv::CapabilityFloat16) != caps.end())
+                fail(name, std::string("does 16-bit float arithmetic (an fp16 variant), which has no portable ") + to_name(t) +
+                               " form (SPIRV-Cross would need GL_AMD_gpu_shader_half_float or GL_NV_gpu_shader5)",
+                     "valid: --targets spv,hlsl,hlsl60,msl,msl_ios for fp16 variants");
             spirv_cross::CompilerGLSL::Options o = glsl.get_common_options();
             o.es = t == target::essl;
             o.version = !o.es ? 450 : stage == shader_stage::compute ? 310 : 300;

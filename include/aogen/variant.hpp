@@ -14,7 +14,8 @@
 //   normals, depth, projection, stage; then only the axes that differ from their
 //   default, each a token of its own: `rawdepth` (seed-exact bilateral depth term),
 //   `pc` (point-cloud fallback), `rc004` (seed 004's range check), `powint` (Unique
-//   Engine's power/intensity output), `wg16x16` (workgroup size).
+//   Engine's power/intensity output), `fp16` (16-bit arithmetic in the AO pass), `wg16x16`
+//   (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -109,6 +110,11 @@ struct variant {
     int workgroup_x = 8, workgroup_y = 8; // compute only: 1..32 each, at most 1024 invocations
     ssao_range_check range_check = ssao_range_check::taos; // ssao only
     ssao_output output = ssao_output::strength;            // ssao only
+    // 16-bit floats for the AO pass's arithmetic where its precision allows it (GTAO's
+    // slice integration and horizon cosines, SSAO's tangent frame, sample offsets and
+    // weights); depth reconstruction, screen positions and sums stay 32-bit. Needs the
+    // device's shaderFloat16 (VK_KHR_shader_float16_int8). DESIGN.md default: off.
+    bool fp16 = false;
 };
 
 // ---------------------------------------------------------------------------------
@@ -188,6 +194,7 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
     if (pass == pass_kind::ao) {
         choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
         choice("NORMALS", names::name_of(normal_source_names, v.normals, "normals"));
+        if (v.fp16) d.push_back({"AO_FP16", ""});
         if (v.tech == technique::ssao) {
             count("AO_SSAO_SAMPLES", v.ssao_samples);
             choice("RANGE_CHECK", names::name_of(ssao_range_check_names, v.range_check, "range check"));
@@ -230,7 +237,7 @@ inline bool operator==(const variant& a, const variant& b)
            x.gtao_steps == y.gtao_steps && x.blur == y.blur && x.blur_depth == y.blur_depth && x.normals == y.normals &&
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
-           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output;
+           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.fp16 == y.fp16;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -294,6 +301,7 @@ inline std::string to_name(const variant& input)
     if (v.point_cloud_fallback) name += "-pc";
     if (v.range_check != d.range_check) name += "-rc004";
     if (v.output != d.output) name += "-powint";
+    if (v.fp16) name += "-fp16";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -335,11 +343,12 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "pc") v.point_cloud_fallback = true;
         else if (x == "rc004") v.range_check = ssao_range_check::seed004;
         else if (x == "powint") v.output = ssao_output::power_intensity;
+        else if (x == "fp16") v.fp16 = true;
         else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, wg<X>x<Y>");
     }
     try {
         validate(v);

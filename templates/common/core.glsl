@@ -45,6 +45,24 @@
 #error aogen: AO_OUTPUT_FORMAT is not defined (codegen writes the output image's format)
 #endif
 
+// ---- arithmetic precision ------------------------------------------------------------------
+// ao_half is the type of the arithmetic a pass can do in 16 bits (variant axis fp16: codegen
+// then enables GL_EXT_shader_explicit_arithmetic_types_float16 after #version): a float16_t
+// with AO_FP16, a float otherwise, so one template serves both. A half has 11 significant
+// bits (relative error 4.9e-4) and a largest finite value of 65504: what needs more -- depth,
+// view positions, screen positions, sums over many samples -- stays float.
+#if defined(AO_FP16)
+#define ao_half float16_t
+#define ao_half2 f16vec2
+#define ao_half3 f16vec3
+#define ao_half3x3 f16mat3
+#else
+#define ao_half float
+#define ao_half2 vec2
+#define ao_half3 vec3
+#define ao_half3x3 mat3
+#endif
+
 // ---- constants --------------------------------------------------------------------------
 const float AO_PI = 3.14159265358979;
 const float AO_HALF_PI = 1.57079632679490;

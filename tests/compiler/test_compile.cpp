@@ -39,6 +39,7 @@
 
 namespace cc = aogen::compile;
 using aogen_test::error_of;
+using Catch::Contains;
 
 namespace {
 
@@ -602,6 +603,28 @@ TEST_CASE("compile: hlsl (SM 5.0) refuses two sets' resources in one register", 
     // SM 6.0 has spaces: the same source is fine there.
     const cc::compiled out = cc::compile(source, cc::shader_stage::compute, "s", {cc::target::hlsl60});
     CHECK(out.text.at(cc::target::hlsl60).find("textures[4] : register(t0, space1)") != std::string::npos);
+}
+
+TEST_CASE("compile: 16-bit float arithmetic goes to spv, hlsl (min16float) and msl (half), and is refused for glsl and essl", "[compile]")
+{
+    const std::string source = R"(#version 450
+#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 0, r32f) uniform writeonly image2D result;
+layout(set = 0, binding = 1) uniform Block { float x; } u;
+void main()
+{
+    float16_t h = float16_t(u.x) * float16_t(0.5);
+    imageStore(result, ivec2(gl_GlobalInvocationID.xy), vec4(float(h)));
+}
+)";
+    const cc::compiled out = cc::compile(source, cc::shader_stage::compute, "h", {cc::target::hlsl50, cc::target::msl_macos});
+    CHECK(out.text.at(cc::target::hlsl50).find("min16float") != std::string::npos);
+    CHECK(out.text.at(cc::target::msl_macos).find("half") != std::string::npos);
+    for (cc::target t : {cc::target::glsl, cc::target::essl})
+        CHECK_THAT(error_of([&] { cc::compile(source, cc::shader_stage::compute, "h", {t}); }),
+                   Contains("h: does 16-bit float arithmetic (an fp16 variant), which has no portable") &&
+                       Contains("valid: --targets spv,hlsl,hlsl60,msl,msl_ios for fp16 variants"));
 }
 
 TEST_CASE("compile: same input, same bytes", "[compile]")

@@ -206,7 +206,7 @@ std::vector<float> evaluate(const std::vector<std::string>& expressions)
     variant v;
     v.tech = technique::gtao;
     const codegen::shader_source s = codegen::generate_shader(v, pass_kind::ao, shader_stage::compute, read);
-    REQUIRE(s.glsl.find("float ao_gtao_slice_integral(") != std::string::npos);
+    REQUIRE(s.glsl.find("ao_half ao_gtao_slice_integral(") != std::string::npos); // ao_half: float here (no fp16)
     const std::vector<uint32_t> words =
         compile::optimize_spirv(compile::glsl_to_spirv(s.glsl, shader_stage::compute, "gtao slice test"), "gtao slice test");
     return run_main(words, expressions.size());

@@ -36,6 +36,7 @@ std::vector<variant> broad_set()
     m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
     m.range_check = {ssao_range_check::taos, ssao_range_check::seed004};
     m.output = {ssao_output::strength, ssao_output::power_intensity};
+    m.fp16 = {false, true};
     return expand(m);
 }
 
@@ -136,6 +137,17 @@ TEST_CASE("variant: each pass gets exactly one define per choice axis", "[varian
     CHECK(has("AO_POINT_CLOUD_FALLBACK", ""));
     CHECK(has("AO_WORKGROUP_X", "8"));
     CHECK(passes(variant{}) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_x, pass_kind::blur_y});
+    // fp16: the AO pass only (the blurs stay 32-bit), and only when asked for.
+    const variant half = variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16");
+    CHECK(half.fp16);
+    auto defines_fp16 = [](const variant& v, pass_kind pass) {
+        for (const define& d : defines(v, pass))
+            if (d.name == "AO_FP16") return true;
+        return false;
+    };
+    CHECK(defines_fp16(half, pass_kind::ao));
+    CHECK_FALSE(defines_fp16(half, pass_kind::blur_x));
+    CHECK_FALSE(defines_fp16(variant{}, pass_kind::ao));
 }
 
 TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and says why", "[variant][selection]")

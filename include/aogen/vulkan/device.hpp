@@ -13,7 +13,8 @@
 //     4. otherwise the first device with Vulkan 1.1 and a compute queue.
 //   Features enabled where the device has them: shaderStorageImageExtendedFormats (r8,
 //   r32f and rgba16f storage images) and fragmentStoresAndAtomics (the raw-value images of
-//   diagnostic fragment passes; fragment_stores() says whether it is there).
+//   diagnostic fragment passes; fragment_stores() says whether it is there), and
+//   shaderFloat16 of VK_KHR_shader_float16_int8 (the fp16 variant axis; shader_float16()).
 //   With device_options::validation and VK_LAYER_KHRONOS_validation installed, the layer is
 //   enabled with a debug messenger that records every warning and error
 //   message into messages(); tests require it to stay empty. (Info messages are the
@@ -130,6 +131,8 @@ public:
     bool validation_enabled() const { return validation_; }
     // Whether fragment shaders may write storage images (raw diagnostics of fragment passes).
     bool fragment_stores() const { return fragment_stores_; }
+    // Whether shaders may do 16-bit float arithmetic (fp16 variants).
+    bool shader_float16() const { return float16_; }
     // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
     double timestamp_period_ns() const { return timestamp_bits_ ? timestamp_period_ : 0.0; }
     uint32_t timestamp_valid_bits() const { return timestamp_bits_; }
@@ -244,12 +247,38 @@ private:
         // Fragment passes in diagnostic mode store their raw values to a storage image.
         want.fragmentStoresAndAtomics = have.fragmentStoresAndAtomics;
         fragment_stores_ = have.fragmentStoresAndAtomics == VK_TRUE;
+        // 16-bit float arithmetic (fp16 variants): an extension in Vulkan 1.1.
+        VkPhysicalDeviceShaderFloat16Int8FeaturesKHR float16{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR};
+        const char* float16_extension = VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME;
+        if (has_device_extension(float16_extension)) {
+            VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+            features.pNext = &float16;
+            vkGetPhysicalDeviceFeatures2(physical_, &features);
+            float16.shaderInt8 = VK_FALSE; // only what aogen uses
+        }
+        float16_ = float16.shaderFloat16 == VK_TRUE;
         VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        if (float16_) {
+            dci.pNext = &float16;
+            dci.enabledExtensionCount = 1;
+            dci.ppEnabledExtensionNames = &float16_extension;
+        }
         dci.queueCreateInfoCount = 1;
         dci.pQueueCreateInfos = &q;
         dci.pEnabledFeatures = &want;
         check(vkCreateDevice(physical_, &dci, nullptr, &device_), "vkCreateDevice");
         vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+    }
+
+    bool has_device_extension(const char* name) const
+    {
+        uint32_t n = 0;
+        vkEnumerateDeviceExtensionProperties(physical_, nullptr, &n, nullptr);
+        std::vector<VkExtensionProperties> all(n);
+        vkEnumerateDeviceExtensionProperties(physical_, nullptr, &n, all.data());
+        for (const VkExtensionProperties& e : all)
+            if (std::string(e.extensionName) == name) return true;
+        return false;
     }
 
     void destroy()
@@ -277,6 +306,7 @@ private:
     bool graphics_ = false;
     bool cpu_ = false;
     bool fragment_stores_ = false;
+    bool float16_ = false;
     float timestamp_period_ = 0;
     VkDeviceSize storage_alignment_ = 1;
     uint32_t timestamp_bits_ = 0;

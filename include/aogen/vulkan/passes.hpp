@@ -185,8 +185,25 @@ private:
                             " does not support (valid: a compute variant, or no raw diagnostics)");
     }
 
+    // A module declaring the Float16 capability (an fp16 variant's AO pass) needs the
+    // device's shaderFloat16.
+    void require_float16(const std::vector<uint32_t>& spirv) const
+    {
+        if (ctx_.shader_float16()) return;
+        const uint32_t op_capability = 17, float16 = 9; // SPIR-V's OpCapability and Capability Float16
+        for (size_t i = 5; i < spirv.size();) { // after the header, instruction by instruction
+            const uint32_t words = spirv[i] >> 16, opcode = spirv[i] & 0xffffu;
+            if (opcode == op_capability && words == 2 && i + 1 < spirv.size() && spirv[i + 1] == float16)
+                throw error("vulkan: " + name_ + " does 16-bit float arithmetic, which " + ctx_.device_name() +
+                            " does not support (valid: a device with shaderFloat16, or the variant without -fp16)");
+            if (words == 0) break;
+            i += words;
+        }
+    }
+
     VkShaderModule make_module(const std::vector<uint32_t>& spirv)
     {
+        require_float16(spirv);
         VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         smi.codeSize = spirv.size() * 4;
         smi.pCode = spirv.data();
