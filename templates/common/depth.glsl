@@ -91,6 +91,22 @@ float ao_view_z(vec2 uv, float depth)
 #endif
 }
 
+// The four depths of the 2x2 texels whose centres surround `pos`, from texel `i0` (the
+// one with the smallest indices) on, clamped at the image's edges: (i0, j1), (i1, j1), (i1, j0), (i0, j0),
+// textureGather's order. Compute passes gather them in one instruction; fragment passes
+// load them one by one, since ESSL 3.00 has no textureGather (the values are the same).
+vec4 ao_depth_quad(ivec2 i0)
+{
+    ivec2 last = ao_depth_size() - 1;
+#if defined(AO_STAGE_COMPUTE)
+    // The texels' shared corner, in uv; clamp-to-edge repeats the border texels past it.
+    return textureGather(u_depth, vec2(i0 + 1) / vec2(last + 1), 0);
+#else
+    ivec2 c0 = clamp(i0, ivec2(0), last), c1 = clamp(i0 + 1, ivec2(0), last);
+    return vec4(ao_load_depth(ivec2(c0.x, c1.y)), ao_load_depth(c1), ao_load_depth(ivec2(c1.x, c0.y)), ao_load_depth(c0));
+#endif
+}
+
 // The raw depth of the surface a sample at screen position `pos` (full-resolution pixels,
 // centres at +0.5) lands on, and `at`, the screen position that depth belongs to; false on
 // background. `nearest` gets pos's texel.
@@ -111,20 +127,16 @@ float ao_view_z(vec2 uv, float depth)
 bool ao_depth_at(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
 {
     ivec2 size = ao_depth_size();
-    nearest = clamp(ivec2(pos), ivec2(0), size - 1);
-    depth = ao_load_depth(nearest);
+    vec2 t = pos - 0.5;
+    ivec2 i0 = ivec2(floor(t));
+    vec2 f = t - floor(t);
+    vec4 g = ao_depth_quad(i0);
+    float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
+    // pos's own texel is one of the four: the one whose centre is within half a texel.
+    nearest = clamp(i0 + ivec2(greaterThanEqual(f, vec2(0.5))), ivec2(0), size - 1);
+    depth = f.y >= 0.5 ? (f.x >= 0.5 ? d11 : d01) : (f.x >= 0.5 ? d10 : d00);
     at = vec2(nearest) + 0.5;
     if (ao_is_background(depth)) return false;
-    vec2 t = pos - 0.5;
-    vec2 f = t - floor(t);
-    // The 2x2 texels around pos, clamped at the edges (four loads, not a textureGather:
-    // ESSL 3.00 and GLSL 3.30 have no gather, and neighbouring loads share a cache line).
-    ivec2 i0 = ivec2(floor(t));
-    ivec2 last = size - 1;
-    float d00 = ao_load_depth(clamp(i0, ivec2(0), last));
-    float d10 = ao_load_depth(clamp(i0 + ivec2(1, 0), ivec2(0), last));
-    float d01 = ao_load_depth(clamp(i0 + ivec2(0, 1), ivec2(0), last));
-    float d11 = ao_load_depth(clamp(i0 + ivec2(1, 1), ivec2(0), last));
     if (ao_is_background(d00) || ao_is_background(d10) || ao_is_background(d01) || ao_is_background(d11)) return true;
     float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
     float planarity = abs(d00 + d11 - d10 - d01);

@@ -15,15 +15,14 @@ float ao_floor_depth(ivec2 q)
 }
 
 // What common/depth.glsl's ao_depth_at reads for a sample at screen position pos: the
-// nearest texel and the 2x2 texels around pos.
+// 2x2 texels around pos (ao_depth_quad: one gather in compute passes, four loads in
+// fragment passes).
 float ao_floor_surface_fetches(vec2 pos)
 {
     ivec2 size = ao_depth_size();
     if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0.0;
-    ivec2 i0 = ivec2(floor(pos - 0.5));
-    ivec2 last = size - 1;
-    return ao_load_depth(ivec2(pos)) + ao_load_depth(clamp(i0, ivec2(0), last)) + ao_load_depth(clamp(i0 + ivec2(1, 0), ivec2(0), last)) +
-           ao_load_depth(clamp(i0 + ivec2(0, 1), ivec2(0), last)) + ao_load_depth(clamp(i0 + ivec2(1, 1), ivec2(0), last));
+    vec4 g = ao_depth_quad(ivec2(floor(pos - 0.5)));
+    return g.x + g.y + g.z + g.w;
 }
 
 // The sum of what the normal's fetches read at full-resolution pixel p: the G-buffer
