@@ -6,6 +6,7 @@
 # the system: embree, assimp, tbb, draco, minizip) and models/ (the assimp test models) into
 # .carry/pack.tar.xz, the Debian loader debs (libvulkan1, libglvnd family) into .gl/, and
 # run this script through the device tool with carry [".gl", ".carry"].
+cd "$(dirname "$0")/../.."
 for f in .gl/*.deb; do dpkg -x $f /; done; ldconfig
 mkdir -p /tmp/a && tar -xJf .carry/pack.tar.xz -C /tmp/a
 export LD_LIBRARY_PATH=/tmp/a/lib
