@@ -3,7 +3,8 @@
 //     std::string md = aogen_report::suite_markdown(d, command);
 //     std::string json = aogen_report::suite_json(d, command);
 //
-// report.md: how to read it; the cases (what each stresses, its criterion); a table of
+// report.md: how to read it; the cases (what each stresses, its criterion, the run closest
+// to its limit and the figure that decided it); a table of
 // variants × cases, ✓ or ✗ per cell, numbered columns so it fits; then every failure with
 // the figure that decided it, and what could not run. results.json: every run's numbers:
 //   {"aogen_report": 2, "suite": "stability", "device", "command", "rays_per_pixel",
@@ -77,12 +78,16 @@ inline std::string suite_markdown(const suite_data& d, const std::string& comman
           "conventions agree where the case compares them, and the RMSE against the ray-traced reference is at most the case's "
           "ratio times the same variant's RMSE on the twin plus a slack. Each variant runs in the projection of the case's camera.\n\n";
 
-    md << "## Cases\n\n| # | case | stresses | criterion | reference noise |\n|---:|---|---|---|---:|\n";
+    md << "## Cases\n\nEach case's run closest to its error limit, with the figure that decided it (every run's is in "
+          "results.json).\n\n| # | case | stresses | criterion | reference noise | closest to its limit |\n|---:|---|---|---|---:|---|\n";
     for (size_t i = 0; i < d.cases.size(); ++i) {
         const stability_criterion& k = d.cases[i].c.criterion;
+        const suite_run* closest = nullptr;
+        for (const suite_run& r : d.cases[i].runs)
+            if (r.ran() && r.error_limit > 0 && (!closest || r.rmse / r.error_limit > closest->rmse / closest->error_limit)) closest = &r;
         md << "| " << i + 1 << " | " << d.cases[i].c.name << " | " << d.cases[i].c.about << " | RMSE ≤ " << fixed(k.error_ratio, 2) << " × twin + "
            << fixed(k.error_slack, 3) << (k.compare_depth ? "; depth Δ ≤ " + fixed(k.depth_max, 4) : "") << " | " << fixed(d.cases[i].truth_noise, 4)
-           << " |\n";
+           << " | " << (closest ? "`" + closest->variant + "`: " + closest->decided_by : "–") << " |\n";
     }
 
     md << "\n## Variants × cases\n\n✓ passed, ✗ failed, – could not run (columns: the cases' numbers above).\n\n| variant |";
