@@ -18,7 +18,7 @@
 //   camera::projection()         aogen::perspective()/orthographic() for the camera's depth
 //                                convention (aogen/math.hpp).
 //   builtin_scene(name)          DESIGN.md's closed-form configurations and a few more (crease,
-//                                groove, wall, sphere_on_plane, room, stairs, plank), three
+//                                groove, wall, sphere_on_plane, room, stairs, plank, far_floor), three
 //                                meshes from assimp-testmodels (engine, teapots, terrain) and
 //                                seed 004's point cloud (point_cloud); builtin_scene_names().
 //   read_scene(text, source)     parses the JSON format below; `source` (a file name) starts
@@ -457,7 +457,7 @@ inline scene load_scene(const std::string& path) { return read_scene(tools::read
 
 inline std::vector<std::string> builtin_scene_names()
 {
-    return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank",
+    return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank", "far_floor",
             "engine", "teapots", "terrain", "point_cloud"};
 }
 
@@ -597,6 +597,11 @@ inline scene builtin_scene(const std::string& name)
         s.planes = {floor};
         s.boxes = {{{-1.5, -0.2, 0.05}, {1.5, 0.2, 0.07}}};
         c.eye = {2.5, -2.5, 1.5}, c.target = {0, 0, 0.05};
+    } else if (name == "far_floor") { // a floor to the horizon from eye height: the truth is 1 everywhere,
+                                      // so anything darker is false occlusion (distant floors banded grey)
+        s.planes = {{{0, 0, 0}, {0, 0, 1}, 2000}}; // 2 km: within what an R = 1 reference traces reliably
+        c.eye = {0, 0, 1.6}, c.target = {0, 40, 0.8};
+        c.far = 5000;
     } else if (name == "engine") { // glTF 2CylinderEngine: y-up millimetres → z-up metres (0.74 m long)
         detail::set_model(s, detail::builtin_model(name, "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", {0.001, 90, {}}),
                           true, 30, 0.9, 0.06);
