@@ -24,6 +24,7 @@
 #include <aogen/compile.hpp>
 #include <aogen/declare.hpp>
 #include <aogen/matrix.hpp>
+#include <aogen/quality.hpp>
 #include <aogen/selection.hpp>
 
 #include <CLI/CLI.hpp>
@@ -87,6 +88,7 @@ public:
         entry["hash"] = hash(v);
         entry["technique"] = names::name_of(technique_names, v.tech, "technique");
         entry["stage"] = names::name_of(pipeline_stage_names, v.stage, "stage");
+        if (const std::string q = quality_name_of(v); !q.empty()) entry["quality"] = q; // aogen/quality.hpp
         entry["features"] = features.compiled;
         nlohmann::ordered_json left = nlohmann::ordered_json::array();
         for (const left_out_feature& f : features.left_out) left.push_back({{"feature", f.feature}, {"why", f.why}});

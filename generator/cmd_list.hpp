@@ -2,6 +2,7 @@
 #pragma once
 
 #include <aogen/matrix.hpp>
+#include <aogen/quality.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -56,6 +57,9 @@ struct list_command {
         print("axis", "values", "in a variant name");
         for (const row& r : rows) print(r.axis, r.values, r.in_name);
         std::cout << "\ndefault variant: " << to_name(variant{}) << "\n";
+        std::cout << "\nGTAO quality presets (XeGTAO's levels; slices x steps):";
+        for (const quality_preset& p : quality_presets) std::cout << " " << p.name << " " << p.slices << "x" << p.steps;
+        std::cout << "\n";
     }
 };
 

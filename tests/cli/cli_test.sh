@@ -122,6 +122,7 @@ list)
   "$aogen" list >"$work/axes.txt"
   check "axes list the default variant" grep -q "^default variant: ssao-s16-half-bilateral-gbufworld-std-persp-cs$" "$work/axes.txt"
   check "axes list every depth convention" grep -q "standard, reversed, reversed_infinite" "$work/axes.txt"
+  check "axes list XeGTAO's quality presets" grep -qx "GTAO quality presets (XeGTAO's levels; slices x steps): low 1x2 medium 2x2 high 3x3 ultra 9x3" "$work/axes.txt"
   "$aogen" list --variants >"$work/variants.txt"
   check "the default matrix has 73 variants" test "$(wc -l <"$work/variants.txt")" -eq 73
   check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 73
@@ -143,6 +144,11 @@ fs = m['variants'][1]
 assert [(p['pass'], p['stage']) for p in fs['passes']] == [('ao', 'vertex'), ('ao', 'fragment'), ('blur_box', 'vertex'), ('blur_box', 'fragment')]
 assert not any(b['binding'] == 2 for b in fs['bindings']), 'reconstructed normals declare no normal buffer'
 assert any(f['feature'] == 'normal buffer input' for f in fs['left_out'])
+assert 'quality' not in ao and 'quality' not in fs, 'SSAO and GTAO 2x3 match no quality preset'
+"
+  "$aogen" generate --quiet --out "$work/q" --targets spv gtao-3x3-half-bilateral-gbufworld-std-persp-cs
+  check "the manifest names a GTAO variant's quality preset" python3 -c "
+import json; assert json.load(open('$work/q/manifest.json'))['variants'][0]['quality'] == 'high'
 "
   printf '#include "aogen_variants.hpp"\nstatic_assert(aogen_variants::%s::ao_comp_spv[0] == 0x07230203u);\n' "${v1//-/_}" >"$work/use.cpp"
   check "the header compiles" c++ -std=c++17 -fsyntax-only -I"$work/gen" "$work/use.cpp"

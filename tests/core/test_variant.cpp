@@ -3,6 +3,7 @@
 // scene selection leaves out what the scene does not need, and the default matrix is
 // the set.
 #include <aogen/matrix.hpp>
+#include <aogen/quality.hpp>
 #include <aogen/selection.hpp>
 #include <aogen/variant.hpp>
 
@@ -190,4 +191,25 @@ TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
     CHECK(gtao_cs == 45);
     CHECK(fs == 4);
     CHECK(to_name(m.front()) == "ssao-s8-full-bilateral-gbufworld-std-persp-cs");
+}
+
+TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO only, and named back", "[variant][quality]")
+{
+    variant v;
+    v.tech = technique::gtao;
+    const std::array<std::pair<const char*, std::pair<int, int>>, 4> expected{{{"low", {1, 2}}, {"medium", {2, 2}}, {"high", {3, 3}}, {"ultra", {9, 3}}}};
+    for (const auto& [name, counts] : expected) {
+        INFO(name);
+        apply_quality(v, quality_preset_from_name(name));
+        CHECK(v.gtao_slices == counts.first);
+        CHECK(v.gtao_steps == counts.second);
+        CHECK(quality_name_of(v) == name);
+        validate(v);
+    }
+    v.gtao_slices = 2, v.gtao_steps = 3; // the default 2x3 is no preset
+    CHECK(quality_name_of(v).empty());
+    CHECK(quality_name_of(variant{}).empty());
+    CHECK_THAT(error_of([] { quality_preset_from_name("epic"); }), Contains("'epic' is not a quality preset (valid: low, medium, high, ultra)"));
+    variant ssao;
+    CHECK_THAT(error_of([&] { apply_quality(ssao, quality_preset_from_name("high")); }), Contains("the variant is not GTAO"));
 }
