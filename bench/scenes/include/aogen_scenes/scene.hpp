@@ -18,9 +18,10 @@
 //   camera::projection()         aogen::perspective()/orthographic() for the camera's depth
 //                                convention (aogen/math.hpp).
 //   builtin_scene(name)          DESIGN.md's closed-form configurations and a few more (crease,
-//                                groove, wall, sphere_on_plane, room, stairs, plank, far_floor), three
-//                                meshes from assimp-testmodels (engine, teapots, terrain) and
-//                                seed 004's point cloud (point_cloud); builtin_scene_names().
+//                                groove, wall, sphere_on_plane, room, stairs, plank, far_floor),
+//                                meshes from assimp-testmodels (engine, teapots, terrain; atat,
+//                                dwarf, spider close and _far on a floor) and seed 004's point
+//                                cloud (point_cloud); builtin_scene_names().
 //   read_scene(text, source)     parses the JSON format below; `source` (a file name) starts
 //                                every error message, and relative mesh paths are resolved
 //                                against its directory. load_scene(path) reads a file.
@@ -458,7 +459,7 @@ inline scene load_scene(const std::string& path) { return read_scene(tools::read
 inline std::vector<std::string> builtin_scene_names()
 {
     return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank", "far_floor",
-            "engine", "teapots", "terrain", "point_cloud"};
+            "engine", "teapots", "terrain", "atat", "atat_far", "dwarf", "dwarf_far", "spider", "spider_far", "point_cloud"};
 }
 
 namespace detail {
@@ -610,6 +611,12 @@ inline scene builtin_scene(const std::string& name)
     } else if (name == "terrain") { // Terragen height field, metres → km (10 km square, 1.4 km relief, z up),
                                     // seen from −y and cropped (fill 1.3): no floor, sky at the top
         detail::set_model(s, detail::builtin_model(name, "TER/RealisticTerrain_Large.ter", {0.001, 0, {}}), false, 0, 1.3, 0.06);
+    } else if (name == "atat" || name == "atat_far") { // Quick3D AT-AT walker, y-up → z-up: thin legs (thickness)
+        detail::set_model(s, detail::builtin_model(name, "Q3D/E-AT-AT.q3o", {1, 0, {}}), true, 30, name == "atat" ? 0.9 : 0.3, 0.06);
+    } else if (name == "dwarf" || name == "dwarf_far") { // Caligari dwarf, y-up → z-up
+        detail::set_model(s, detail::builtin_model(name, "COB/dwarf.cob", {1, 0, {}}), true, 30, name == "dwarf" ? 0.9 : 0.3, 0.06);
+    } else if (name == "spider" || name == "spider_far") { // OBJ spider, y-up → z-up: thin legs over the floor
+        detail::set_model(s, detail::builtin_model(name, "OBJ/spider.obj", {1, 90, {}}), true, 30, name == "spider" ? 0.9 : 0.3, 0.06);
     } else if (name == "point_cloud") {
         detail::set_point_cloud(s);
     } else {
