@@ -1,0 +1,113 @@
+// aogen_tune — the search behind aogen's tuned defaults (aogen_report/tune.hpp): per variant,
+// the parameters with the lowest mean RMSE against the ray-traced truth on training scenes,
+// checked on validation scenes the search did not see, beside the report's defaults.
+//
+//   aogen_tune [--variants NAME,...] [--train a,b,...] [--validate c,d,...] [--size WxH]
+//              [--rays N] [--points P] [--rounds K] [--device NAME] --out results.json
+//
+// Prints a Markdown table (BENCHMARKS.md keeps them) and writes every figure to --out.
+#include <aogen_report/tune.hpp>
+
+#include <aogen_tools/files.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+std::vector<std::string> split_list(const std::string& s)
+{
+    std::vector<std::string> out(1);
+    for (char c : s) {
+        if (c == ',') out.emplace_back();
+        else out.back().push_back(c);
+    }
+    return out;
+}
+
+std::vector<aogen::scenes::scene> load(const std::string& list, int w, int h)
+{
+    std::vector<aogen::scenes::scene> out;
+    for (const std::string& n : split_list(list)) {
+        aogen::scenes::scene s = aogen::scenes::builtin_scene(n);
+        s.camera.width = w, s.camera.height = h;
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+std::string fixed(double x, int digits)
+{
+    std::ostringstream o;
+    o << std::fixed << std::setprecision(digits) << x;
+    return o.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"aogen_tune: search a variant's parameters against the ray-traced truth"};
+    std::string variants = "gtao-2x3-half-bilateral-gbufworld-std-persp-cs,ssao-s16-half-bilateral-gbufworld-std-persp-cs";
+    std::string train = "crease,groove,wall,sphere_on_plane,room,stairs,plank,engine,teapots,terrain";
+    std::string validate = "atat,atat_far,dwarf,dwarf_far,spider,spider_far";
+    std::string size = "320x180", device, out;
+    int rays = 1024, points = 5, rounds = 3;
+    app.add_option("--variants", variants, "canonical names, comma-separated")->capture_default_str();
+    app.add_option("--train", train, "built-in scenes the search fits")->capture_default_str();
+    app.add_option("--validate", validate, "built-in scenes it is checked on")->capture_default_str();
+    app.add_option("--size", size, "WxH of every scene")->capture_default_str();
+    app.add_option("--rays", rays, "reference rays per pixel (the square of an integer)")->capture_default_str();
+    app.add_option("--points", points, "values per axis per round")->capture_default_str()->check(CLI::Range(2, 9));
+    app.add_option("--rounds", rounds, "narrowing rounds")->capture_default_str()->check(CLI::Range(1, 8));
+    app.add_option("--device", device, "the Vulkan device whose name contains this");
+    app.add_option("--out", out, "results.json")->required();
+    CLI11_PARSE(app, argc, argv);
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        int w = 0, h = 0;
+        if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
+            aogen::fail("--size", aogen::quote(size) + " is not a size", "valid: WIDTHxHEIGHT, each 1..16384");
+        const int grid = int(std::lround(std::sqrt(double(rays))));
+        if (grid * grid != rays || grid < 4) aogen::fail("--rays", std::to_string(rays) + " is not a square of an integer >= 4", "valid: e.g. 1024, 4096");
+        aogen::vulkan::device_options o;
+        o.name = device;
+        aogen::vulkan::context ctx(o);
+        nlohmann::json results = nlohmann::json::array();
+        std::cout << "| variant | axes | defaults | train RMSE | validate RMSE | tuned | train RMSE | validate RMSE |\n|---|---|---|---:|---:|---|---:|---:|\n";
+        for (const std::string& name : split_list(variants)) {
+            aogen_report::tune_settings t;
+            t.v = aogen::variant_from_name(name);
+            t.train = load(train, w, h), t.validate = load(validate, w, h);
+            t.grid = grid, t.points = points, t.rounds = rounds;
+            t.progress = [&](const std::string& line) {
+                std::cerr << "aogen_tune " << fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1) << "s " << line << std::endl;
+            };
+            const aogen_report::tune_result r = aogen_report::tune(ctx, t);
+            std::string axes, defaults, best;
+            nlohmann::json j{{"variant", r.variant}, {"evaluations", r.evaluations}, {"train_rmse", r.train_rmse}, {"validate_rmse", r.validate_rmse},
+                             {"default_train_rmse", r.default_train}, {"default_validate_rmse", r.default_validate}};
+            for (size_t i = 0; i < r.axes.size(); ++i) {
+                axes += (i ? ", " : "") + r.axes[i].name;
+                defaults += (i ? ", " : "") + fixed(r.default_point[i], 3);
+                best += (i ? ", " : "") + fixed(r.best[i], 3);
+                j["best"][r.axes[i].name] = r.best[i];
+                j["defaults"][r.axes[i].name] = r.default_point[i];
+            }
+            results.push_back(j);
+            std::cout << "| `" << r.variant << "` | " << axes << " | " << defaults << " | " << fixed(r.default_train, 4) << " | " << fixed(r.default_validate, 4)
+                      << " | " << best << " | " << fixed(r.train_rmse, 4) << " | " << fixed(r.validate_rmse, 4) << " |" << std::endl;
+        }
+        nlohmann::json doc{{"train", train}, {"validate", validate}, {"size", size}, {"rays_per_pixel", rays}, {"points", points}, {"rounds", rounds},
+                           {"device", ctx.device_name()}, {"variants", results}};
+        aogen::tools::write_file(out, doc.dump(2) + "\n");
+    } catch (const std::exception& e) {
+        std::cerr << "aogen_tune: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
