@@ -2,8 +2,11 @@
 // the parameters with the lowest mean RMSE against the ray-traced truth on training scenes,
 // checked on validation scenes the search did not see, beside the report's defaults.
 //
-//   aogen_tune [--variants NAME,...] [--train a,b,...] [--validate c,d,...] [--size WxH]
-//              [--rays N] [--points P] [--rounds K] [--device NAME] --out results.json
+//   aogen_tune [--variants NAME,...] [--joint] [--train a,b,...] [--validate c,d,...]
+//              [--size WxH] [--rays N] [--points P] [--rounds K] [--device NAME] --out results.json
+//
+// Each variant is searched on its own; with --joint the variants (of one technique) share
+// one set of values, the best for all of them together — what a product default must be.
 //
 // Prints a Markdown table (BENCHMARKS.md keeps them) and writes every figure to --out.
 #include <aogen_report/tune.hpp>
@@ -57,6 +60,7 @@ int main(int argc, char** argv)
     std::string validate = "atat,atat_far,dwarf,dwarf_far,spider,spider_far";
     std::string size = "320x180", device, out;
     int rays = 1024, points = 5, rounds = 3;
+    bool joint = false;
     app.add_option("--variants", variants, "canonical names, comma-separated")->capture_default_str();
     app.add_option("--train", train, "built-in scenes the search fits")->capture_default_str();
     app.add_option("--validate", validate, "built-in scenes it is checked on")->capture_default_str();
@@ -65,6 +69,7 @@ int main(int argc, char** argv)
     app.add_option("--points", points, "values per axis per round")->capture_default_str()->check(CLI::Range(2, 9));
     app.add_option("--rounds", rounds, "narrowing rounds")->capture_default_str()->check(CLI::Range(1, 8));
     app.add_option("--device", device, "the Vulkan device whose name contains this");
+    app.add_flag("--joint", joint, "search one set of values for all the variants together (they must share a technique)");
     app.add_option("--out", out, "results.json")->required();
     CLI11_PARSE(app, argc, argv);
     const auto start = std::chrono::steady_clock::now();
@@ -78,19 +83,25 @@ int main(int argc, char** argv)
         o.name = device;
         aogen::vulkan::context ctx(o);
         nlohmann::json results = nlohmann::json::array();
-        std::cout << "| variant | axes | defaults | train RMSE | validate RMSE | tuned | train RMSE | validate RMSE |\n|---|---|---|---:|---:|---|---:|---:|\n";
+        std::vector<std::vector<aogen::variant>> groups; // each searched on its own, or all together with --joint
         for (const std::string& name : split_list(variants)) {
+            if (!joint || groups.empty()) groups.emplace_back();
+            groups.back().push_back(aogen::variant_from_name(name));
+        }
+        std::cout << "| variants | axes | defaults | train RMSE | validate RMSE | tuned | train RMSE | validate RMSE |\n|---|---|---|---:|---:|---|---:|---:|\n";
+        for (const std::vector<aogen::variant>& group : groups) {
             aogen_report::tune_settings t;
-            t.v = aogen::variant_from_name(name);
+            t.variants = group;
             t.train = load(train, w, h), t.validate = load(validate, w, h);
             t.grid = grid, t.points = points, t.rounds = rounds;
             t.progress = [&](const std::string& line) {
                 std::cerr << "aogen_tune " << fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1) << "s " << line << std::endl;
             };
             const aogen_report::tune_result r = aogen_report::tune(ctx, t);
-            std::string axes, defaults, best;
-            nlohmann::json j{{"variant", r.variant}, {"evaluations", r.evaluations}, {"train_rmse", r.train_rmse}, {"validate_rmse", r.validate_rmse},
-                             {"default_train_rmse", r.default_train}, {"default_validate_rmse", r.default_validate}};
+            std::string axes, defaults, best, names;
+            nlohmann::json j{{"variants", r.variants}, {"evaluations", r.evaluations}, {"train_rmse", r.train_rmse}, {"validate_rmse", r.validate_rmse},
+                             {"default_train_rmse", r.default_train}, {"default_validate_rmse", r.default_validate},
+                             {"variant_validate_rmse", r.variant_validate}, {"variant_default_validate_rmse", r.variant_default_validate}};
             for (size_t i = 0; i < r.axes.size(); ++i) {
                 axes += (i ? ", " : "") + r.axes[i].name;
                 defaults += (i ? ", " : "") + fixed(r.default_point[i], 3);
@@ -98,8 +109,9 @@ int main(int argc, char** argv)
                 j["best"][r.axes[i].name] = r.best[i];
                 j["defaults"][r.axes[i].name] = r.default_point[i];
             }
+            for (const std::string& n : r.variants) names += (names.empty() ? "" : ", ") + ("`" + n + "`");
             results.push_back(j);
-            std::cout << "| `" << r.variant << "` | " << axes << " | " << defaults << " | " << fixed(r.default_train, 4) << " | " << fixed(r.default_validate, 4)
+            std::cout << "| " << names << " | " << axes << " | " << defaults << " | " << fixed(r.default_train, 4) << " | " << fixed(r.default_validate, 4)
                       << " | " << best << " | " << fixed(r.train_rmse, 4) << " | " << fixed(r.validate_rmse, 4) << " |" << std::endl;
         }
         nlohmann::json doc{{"train", train}, {"validate", validate}, {"size", size}, {"rays_per_pixel", rays}, {"points", points}, {"rounds", rounds},

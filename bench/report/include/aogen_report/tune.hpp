@@ -2,9 +2,10 @@
 // the defaults a user should get, found the way XeGTAO's auto-tune finds its own.
 //
 // WHAT
-//   tune(settings) takes one variant, training scenes and validation scenes, and searches
-//   the variant's continuous parameters for the lowest mean RMSE (each training scene weighted
-//   equally, default output: no calibration afterwards) by grid_search.hpp's narrowing grid
+//   tune(settings) takes variants of one technique, training scenes and validation scenes,
+//   and searches for the one set of parameter values with the lowest mean RMSE over the
+//   variants and training scenes (each weighted equally, default output: no calibration
+//   afterwards; one variant finds its own best values, several the best common ones) by grid_search.hpp's narrowing grid
 //   (`points` values per axis, `rounds` rounds). The axes (tune_axes):
 //     gtao   radius_scale (the radius as a multiple of the scene's R), strength (the final
 //            power: visibility^strength), thickness_bias (the cut-off radius·(1 + 10·t));
@@ -16,7 +17,7 @@
 //
 // USAGE
 //     aogen_report::tune_settings s;
-//     s.v = aogen::variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs");
+//     s.variants = {aogen::variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs")};
 //     s.train = {...scenes...}, s.validate = {...};
 //     aogen_report::tune_result r = aogen_report::tune(ctx, s);
 #pragma once
@@ -30,6 +31,8 @@
 #include <aogen/vulkan/chain.hpp>
 
 #include <functional>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,7 +62,7 @@ inline aogen::vulkan::chain_settings tuned_settings(const aogen::variant& v, con
 }
 
 struct tune_settings {
-    aogen::variant v;
+    std::vector<aogen::variant> variants; // one technique; searched jointly: one set of values for all
     std::vector<aogen::scenes::scene> train, validate;
     int grid = 32;  // reference rays per pixel: grid²
     int points = 5; // values per axis per round
@@ -68,57 +71,63 @@ struct tune_settings {
 };
 
 struct tune_result {
-    std::string variant;
+    std::vector<std::string> variants;
     std::vector<search_axis> axes;
-    std::vector<double> best;                     // one value per axis
-    double train_rmse = 0, validate_rmse = 0;     // at best
+    std::vector<double> best;                       // one value per axis
+    double train_rmse = 0, validate_rmse = 0;       // at best, the mean over variants and scenes
     double default_train = 0, default_validate = 0; // the report's defaults
-    std::vector<double> default_point;             // the defaults on the axes
+    std::vector<double> default_point;              // the defaults on the axes
+    std::vector<double> variant_default_validate, variant_validate; // per variant, on the validation scenes
     size_t evaluations = 0;
 };
 
 namespace detail {
 
-// One scene, ready for one variant: the G-buffer uploaded once, its reference.
+// One scene, ready for any variant: its reference traced once, and a G-buffer uploaded once
+// per normal space and depth convention the variants read.
 class tune_scene {
 public:
-    tune_scene(aogen::vulkan::context& ctx, const aogen::variant& v, const aogen::scenes::scene& s, int grid)
-        : prepared_(prepare(s, grid)), v_(v)
-    {
-        aogen::scenes::gbuffer_options o;
-        o.use_scene_normals = false;
-        o.normals = v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
-        const aogen::scenes::scene seen = for_variant(prepared_.scene, v);
-        const aogen::vulkan::gbuffer g =
-            aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(aogen::scenes::render_gbuffer(seen, *prepared_.tracer, o));
-        width_ = g.width, height_ = g.height;
-        uploaded_ = std::make_unique<aogen::vulkan::gpu_gbuffer>(ctx, g);
-    }
+    tune_scene(const aogen::scenes::scene& s, int grid) : prepared_(prepare(s, grid)) {}
 
-    // The RMSE of `c` with `settings` against this scene's reference.
-    double rmse(aogen::vulkan::context& ctx, const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& settings) const
+    // The RMSE of variant `v` (chain `c`) with `settings` against this scene's reference.
+    double rmse(aogen::vulkan::context& ctx, const aogen::variant& v, const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& settings)
     {
-        const auto [tw, th] = aogen::vulkan::target_size(v_, width_, height_);
+        const aogen::vulkan::gpu_gbuffer& g = gbuffer_for(ctx, v);
+        const int W = prepared_.truth.width, H = prepared_.truth.height;
+        const auto [tw, th] = aogen::vulkan::target_size(v, W, H);
         const aogen::vulkan::chain_result out =
-            aogen::vulkan::bound_chain(ctx, c.passes(), *uploaded_, aogen::vulkan::inputs_for(v_, settings, tw, th), tw, th).run_once();
-        const std::vector<float> full = upsample(out.ao, tw, th, tw == width_ ? 1 : 2, width_, height_);
-        return compare(full, prepared_.truth.ao, prepared_.truth.valid).rmse;
+            aogen::vulkan::bound_chain(ctx, c.passes(), g, aogen::vulkan::inputs_for(v, settings, tw, th), tw, th).run_once();
+        return compare(upsample(out.ao, tw, th, tw == W ? 1 : 2, W, H), prepared_.truth.ao, prepared_.truth.valid).rmse;
     }
     const aogen::scenes::scene& scene() const { return prepared_.scene; }
 
 private:
+    const aogen::vulkan::gpu_gbuffer& gbuffer_for(aogen::vulkan::context& ctx, const aogen::variant& v)
+    {
+        aogen::scenes::gbuffer_options o;
+        o.use_scene_normals = false;
+        o.normals = v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
+        const std::string key = std::to_string(int(o.normals)) + "/" + std::to_string(int(v.depth));
+        auto it = uploaded_.find(key);
+        if (it != uploaded_.end()) return *it->second;
+        const aogen::scenes::scene seen = for_variant(prepared_.scene, v);
+        const aogen::vulkan::gbuffer g =
+            aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(aogen::scenes::render_gbuffer(seen, *prepared_.tracer, o));
+        return *uploaded_.emplace(key, std::make_unique<aogen::vulkan::gpu_gbuffer>(ctx, g)).first->second;
+    }
+
     prepared_scene prepared_;
-    aogen::variant v_;
-    int width_ = 0, height_ = 0;
-    std::unique_ptr<aogen::vulkan::gpu_gbuffer> uploaded_;
+    std::map<std::string, std::unique_ptr<aogen::vulkan::gpu_gbuffer>> uploaded_;
 };
 
-// The mean over `scenes` of the RMSE with the settings `settings` makes for each.
-inline double mean_rmse(aogen::vulkan::context& ctx, const aogen::vulkan::chain& c, const std::vector<std::unique_ptr<tune_scene>>& scenes,
-                        const std::function<aogen::vulkan::chain_settings(const aogen::scenes::scene&)>& settings)
+using settings_maker = std::function<aogen::vulkan::chain_settings(const aogen::variant&, const aogen::scenes::scene&)>;
+
+// The mean over `scenes` of variant `v`'s RMSE with the settings `make` gives.
+inline double mean_rmse(aogen::vulkan::context& ctx, const aogen::variant& v, const aogen::vulkan::chain& c,
+                        std::vector<std::unique_ptr<tune_scene>>& scenes, const settings_maker& make)
 {
     double sum = 0;
-    for (const auto& s : scenes) sum += s->rmse(ctx, c, settings(s->scene()));
+    for (auto& s : scenes) sum += s->rmse(ctx, v, c, make(v, s->scene()));
     return scenes.empty() ? 0.0 : sum / double(scenes.size());
 }
 
@@ -126,42 +135,54 @@ inline double mean_rmse(aogen::vulkan::context& ctx, const aogen::vulkan::chain&
 
 inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
 {
+    if (t.variants.empty()) aogen::fail("tune", "has no variant", "valid: at least one variant");
     tune_result r;
-    r.variant = aogen::to_name(t.v);
-    r.axes = tune_axes(t.v);
-    const aogen::vulkan::chain c(ctx, t.v);
+    r.axes = tune_axes(t.variants.front());
+    std::vector<std::unique_ptr<aogen::vulkan::chain>> chains;
+    for (const aogen::variant& v : t.variants) {
+        if (tune_axes(v).size() != r.axes.size() || v.tech != t.variants.front().tech)
+            aogen::fail("tune", aogen::to_name(v) + " is not the technique of " + aogen::to_name(t.variants.front()), "valid: variants of one technique");
+        r.variants.push_back(aogen::to_name(v));
+        chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, v));
+    }
     std::vector<std::unique_ptr<detail::tune_scene>> train, validate;
-    for (const aogen::scenes::scene& s : t.train) {
-        require_radius_works(s);
-        train.push_back(std::make_unique<detail::tune_scene>(ctx, t.v, s, t.grid));
-    }
-    for (const aogen::scenes::scene& s : t.validate) {
-        require_radius_works(s);
-        validate.push_back(std::make_unique<detail::tune_scene>(ctx, t.v, s, t.grid));
-    }
-    t.progress(r.variant + ": " + std::to_string(train.size()) + " training and " + std::to_string(validate.size()) + " validation scenes ready");
+    for (const aogen::scenes::scene& s : t.train) require_radius_works(s), train.push_back(std::make_unique<detail::tune_scene>(s, t.grid));
+    for (const aogen::scenes::scene& s : t.validate) require_radius_works(s), validate.push_back(std::make_unique<detail::tune_scene>(s, t.grid));
+    t.progress(std::to_string(t.variants.size()) + " variants, " + std::to_string(train.size()) + " training and " + std::to_string(validate.size()) +
+               " validation scenes ready");
 
-    const auto at = [&](const std::vector<double>& x) {
-        return [&t, x](const aogen::scenes::scene& s) { return tuned_settings(t.v, s, x); };
+    // The mean over variants of each variant's mean over `scenes`; per variant into `each`.
+    const auto joint = [&](std::vector<std::unique_ptr<detail::tune_scene>>& scenes, const detail::settings_maker& make, std::vector<double>* each) {
+        double sum = 0;
+        for (size_t i = 0; i < t.variants.size(); ++i) {
+            const double e = detail::mean_rmse(ctx, t.variants[i], *chains[i], scenes, make);
+            if (each) each->push_back(e);
+            sum += e;
+        }
+        return sum / double(t.variants.size());
     };
-    const auto defaults = [&](const aogen::scenes::scene& s) { return default_settings(t.v, s); };
-    r.default_train = detail::mean_rmse(ctx, c, train, defaults);
-    r.default_validate = detail::mean_rmse(ctx, c, validate, defaults);
+    const auto at = [](const std::vector<double>& x) {
+        return [x](const aogen::variant& v, const aogen::scenes::scene& s) { return tuned_settings(v, s, x); };
+    };
+    const detail::settings_maker defaults = [](const aogen::variant& v, const aogen::scenes::scene& s) { return default_settings(v, s); };
+    r.default_train = joint(train, defaults, nullptr);
+    r.default_validate = joint(validate, defaults, &r.variant_default_validate);
 
     int round = 0;
     size_t seen = 0;
-    const size_t per_round = [&] { size_t k = 1; for (size_t i = 0; i < r.axes.size(); ++i) k *= size_t(t.points); return k; }();
+    size_t per_round = 1;
+    for (size_t i = 0; i < r.axes.size(); ++i) per_round *= size_t(t.points);
     const grid_search_result g = narrowing_grid_search(r.axes, t.points, t.rounds, [&](const std::vector<double>& x) {
-        const double e = detail::mean_rmse(ctx, c, train, at(x));
-        if (++seen % per_round == 0) t.progress(r.variant + ": round " + std::to_string(++round) + " done");
+        const double e = joint(train, at(x), nullptr);
+        if (++seen % per_round == 0) t.progress("round " + std::to_string(++round) + " done");
         return e;
     });
     r.best = g.best, r.train_rmse = g.value, r.evaluations = g.evaluations;
-    r.validate_rmse = detail::mean_rmse(ctx, c, validate, at(r.best));
+    r.validate_rmse = joint(validate, at(r.best), &r.variant_validate);
     // The defaults on the axes: the radius is R itself (settings.hpp), the rest the preset's.
-    if (t.v.tech == aogen::technique::gtao) {
-        const aogen::gtao_params g = aogen::presets::taos_gtao().gtao;
-        r.default_point = {1.0, g.strength, g.thickness_bias};
+    if (t.variants.front().tech == aogen::technique::gtao) {
+        const aogen::gtao_params p = aogen::presets::taos_gtao().gtao;
+        r.default_point = {1.0, p.strength, p.thickness_bias};
     } else {
         r.default_point = {1.0, aogen::presets::taos_ssao().ssao.strength};
     }
