@@ -197,7 +197,7 @@ TEST_CASE("params: bilateral blur weights are the seed's, and do not sum to 1", 
     CHECK(B::box_size == 4);
 }
 
-TEST_CASE("params: defaults validate and follow DESIGN.md", "[params]")
+TEST_CASE("params: defaults validate and follow DESIGN.md, GTAO's strength and thickness tuned", "[params]")
 {
     const aogen::ssao_params s;
     const aogen::gtao_params g;
@@ -212,8 +212,10 @@ TEST_CASE("params: defaults validate and follow DESIGN.md", "[params]")
     CHECK(g.slices == 2);
     CHECK(g.steps == 3);
     CHECK(g.radius == 1.0f);
-    CHECK(g.thickness_bias == 0.1f);
-    CHECK(g.strength == 2.0f);
+    // Tuned against the ray-traced reference (params.hpp; BENCHMARKS.md), not seed 001's.
+    CHECK(g.thickness_bias == 0.075f);
+    CHECK(g.strength == 1.109375f);
+    CHECK(aogen::gtao_params::radius_per_ao_radius == 0.78125f);
     CHECK(b.mode == aogen::blur_mode::bilateral);
     CHECK(b.depth == aogen::bilateral_depth::linear);
     CHECK(b.raw_depth_k == 1000.0f);

@@ -133,7 +133,7 @@ assert max(x["rmse"] for x in runs("fov_120", "gtao")) < 0.08, "GTAO darkens the
 assert max(x["rmse"] for x in runs("image_8x8", "gtao-")) < 0.12, "half-resolution GTAO too dark at 8x8"
 for case in ("radius_past_screen", "radius_huge"):  # no worse than the largest radius that fits the screen
     for x in runs(case, ""):
-        assert x["rmse"] <= 1.25 * x["twin_rmse"] + 0.01, (case, x["variant"], x["rmse"], x["twin_rmse"])
+        assert x["rmse"] <= 1.25 * x["twin_rmse"] + 0.02, (case, x["variant"], x["rmse"], x["twin_rmse"])
 assert len(runs("sub_millimetre", "")) >= 70  # an AO radius of 1e-6 runs (it was refused)
 assert all(x["depth_max"] <= 3 / 255 for x in cases["depth_conventions"]["runs"])
 PY

@@ -6,10 +6,11 @@
 //     aogen::vulkan::chain_settings s = aogen_report::default_settings(v, scene);
 //     aogen_report::require_radius_works(scene);                     // before any work
 //
-// Defaults are the seed presets (aogen/params.hpp): Taos' SSAO for the strength output
-// form and Unique Engine's for power/intensity, Taos' GTAO (strength 2) — with every
-// length scaled to the scene: the SSAO hemisphere and the GTAO radius are the scene's AO
-// radius R (the ground truth's radius), SSAO's bias keeps the presets' ratio to the
+// Defaults are what a user gets (aogen/params.hpp): GTAO's tuned defaults, its radius
+// gtao_params::radius_per_ao_radius × the scene's AO radius R (the ground truth's radius);
+// for SSAO the seed presets (not tuned yet), Taos' for the strength output form and Unique
+// Engine's for power/intensity, the hemisphere R — with every length scaled to the scene:
+// SSAO's bias keeps the presets' ratio to the
 // radius (0.025 at 0.5: 5 % of R), and the linear bilateral depth term's sharpness
 // (10 per unit at R = 1) scales with 1/R, so every scene is seen at the same relative scale.
 #pragma once
@@ -53,7 +54,8 @@ inline radius_range ao_radius_range()
 {
     const double sharpness = aogen::blur_params{}.linear_sharpness;          // at R = 1
     const double bias_ratio = aogen::presets::taos_ssao().ssao.bias / aogen::presets::taos_ssao().ssao.radius;
-    double hi = std::min<double>(aogen::ssao_params::radius_range.hi, aogen::gtao_params::radius_range.hi);
+    double hi = std::min(double(aogen::ssao_params::radius_range.hi),
+                         aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
     hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / bias_ratio);
     return {sharpness / double(aogen::blur_params::linear_sharpness_range.hi), hi};
 }
@@ -76,8 +78,8 @@ inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, c
     c.ssao = ssao.ssao;
     c.ssao.bias = c.ssao.bias / c.ssao.radius * R;
     c.ssao.radius = R;
-    c.gtao = aogen::presets::taos_gtao().gtao;
-    c.gtao.radius = R;
+    c.gtao = aogen::gtao_params{}; // the tuned defaults (params.hpp)
+    c.gtao.radius = aogen::gtao_params::radius_per_ao_radius * R;
     c.blur = v.blur_depth == aogen::bilateral_depth::seed_raw ? aogen::presets::taos_quality_blur() : aogen::blur_params{};
     c.blur.linear_sharpness = c.blur.linear_sharpness / R;
     const aogen::scenes::scene seen = for_variant(s, v);

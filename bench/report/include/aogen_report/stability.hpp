@@ -35,6 +35,8 @@
 //    "twin_window": [x, y]}           (the scene's image is the twin's from pixel (x, y) on)
 #pragma once
 
+#include "settings.hpp"
+
 #include <aogen_scenes/scene.hpp>
 #include <aogen_tools/json_reader.hpp>
 
@@ -215,14 +217,16 @@ inline stability_case builtin_case(const std::string& name)
         return make(name, "an AO radius that projects to about 0.1 pixel", s, t);
     }
     if (name == "radius_past_screen" || name == "radius_huge") {
-        s.ao_radius = name == "radius_huge" ? 1e6 : 20;
+        s.ao_radius = name == "radius_huge" ? ao_radius_range().hi : 20;
         // The twin: the largest radius that still fits the screen (half its height at the
         // box's depth is 2.8). A hemisphere past the screen can see no more than that one, so
         // it must do as well as it — not send its samples off screen and read too light.
         t.ao_radius = 2.8;
         stability_case c =
-            make(name, name == "radius_huge" ? "the largest AO radius the settings take (1e6)" : "an AO radius far past the whole screen", s, t);
-        c.criterion.error_ratio = 1.25, c.criterion.error_slack = 0.01;
+            make(name, name == "radius_huge" ? "the largest AO radius the settings take (" + aogen::format_number(s.ao_radius) + ")" : "an AO radius far past the whole screen", s, t);
+        // Slack 0.02: GTAO's tuned radius (0.78 R, params.hpp) keeps the twin's horizon
+        // search inside the screen, where the capped one reaches its edge.
+        c.criterion.error_ratio = 1.25, c.criterion.error_slack = 0.02;
         return c;
     }
     if (name == "radius_tiny") {
@@ -296,13 +300,19 @@ inline stability_case builtin_case(const std::string& name)
         stability_case c = make(name, "an extreme aspect ratio (" + std::to_string(s.camera.width) + "×" + std::to_string(s.camera.height) +
                                           "): a strip of a square view", s, t);
         c.twin_window = name == "aspect_wide" ? std::array<int, 2>{0, 124} : std::array<int, 2>{124, 0};
+        // Slack 0.06: a strip 8 pixels across (4 at half resolution) cannot show occluders
+        // beside it that the twin's screen shows; the error that costs is information, not
+        // precision (with GTAO's tuned defaults the twin's RMSE fell 4x, the strip's cannot).
+        c.criterion.error_slack = 0.06;
         return c;
     }
     if (name == "image_1x1" || name == "image_8x8") {
         const int n = name == "image_1x1" ? 1 : 8;
         s.camera.width = s.camera.height = n;
         s.camera.target = {0, 0, 0.8}; // the one pixel sees the box
-        return make(name, "an image of " + std::to_string(n) + "×" + std::to_string(n) + " pixels", s, t);
+        stability_case c = make(name, "an image of " + std::to_string(n) + "×" + std::to_string(n) + " pixels", s, t);
+        c.criterion.error_slack = 0.06; // 4×4 AO pixels at half resolution show little of what the 64×36 twin shows (as aspect_*)
+        return c;
     }
     if (name == "depth_d16" || name == "depth_d24") {
         s.renderer.depth_buffer = name == "depth_d16" ? aogen::scenes::depth_format::d16_unorm : aogen::scenes::depth_format::d24_unorm;

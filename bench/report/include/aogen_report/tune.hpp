@@ -12,8 +12,8 @@
 //     ssao   radius_scale, strength (1 − occlusion·strength); the bias stays 5 % of the
 //            radius, as the presets have it.
 //   The result carries the best point, its training and validation RMSE, and the same two
-//   for the report's defaults (the seed presets scaled to R: settings.hpp), so what the
-//   search buys is read on scenes it did not see.
+//   for the report's defaults (settings.hpp), so what the search buys is read on scenes it
+//   did not see.
 //
 // USAGE
 //     aogen_report::tune_settings s;
@@ -44,7 +44,7 @@ inline std::vector<search_axis> tune_axes(const aogen::variant& v)
     if (v.tech == aogen::technique::gtao) return {{"radius_scale", 0.5, 2.0}, {"strength", 0.25, 3.0}, {"thickness_bias", 0.0, 0.6}};
     if (v.output == aogen::ssao_output::power_intensity)
         aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, or SSAO with the strength output");
-    return {{"radius_scale", 0.5, 2.0}, {"strength", 0.5, 8.0}};
+    return {{"radius_scale", 0.5, 4.0}, {"strength", 0.5, 8.0}};
 }
 
 // The report's default settings for `v` on `s` with the axes' values `x` applied.
@@ -179,10 +179,10 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
     });
     r.best = g.best, r.train_rmse = g.value, r.evaluations = g.evaluations;
     r.validate_rmse = joint(validate, at(r.best), &r.variant_validate);
-    // The defaults on the axes: the radius is R itself (settings.hpp), the rest the preset's.
+    // The report's defaults on the axes (settings.hpp).
     if (t.variants.front().tech == aogen::technique::gtao) {
-        const aogen::gtao_params p = aogen::presets::taos_gtao().gtao;
-        r.default_point = {1.0, p.strength, p.thickness_bias};
+        const aogen::gtao_params p;
+        r.default_point = {aogen::gtao_params::radius_per_ao_radius, p.strength, p.thickness_bias};
     } else {
         r.default_point = {1.0, aogen::presets::taos_ssao().ssao.strength};
     }
