@@ -13,6 +13,7 @@
 #           --check: it passes, its results hold the four defects issue 11 found fixed
 #           (absolute figures, which the old shaders miss), and a planted failing case
 #           file makes --check exit 1 and the report name it.
+#   tune    aogen_tune's smallest search: the settings it evaluates, its JSON and table.
 set -uo pipefail
 report=$(realpath "$1") case=$2
 work=$(mktemp -d)
@@ -154,6 +155,26 @@ JSON
   grep -q "impossible.*gtao-1x2-half-noblur" "$work/f/report.md" || fail "report.md does not name the failing case and variant"
   "$report" --suite stability --cases "$work/impossible.json" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --out "$work/g" 2>/dev/null ||
     fail "without --check a failing case must not fail the run"
+  ;;
+tune)
+  # aogen_tune (AOGEN_REPORT names aogen_report; aogen_tune is built beside it): a tiny search,
+  # 2 points per axis and 1 round, on one training and one validation scene.
+  tune="$(dirname "$report")/aogen_tune"
+  "$tune" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs,ssao-s8-half-box-gbufworld-std-persp-cs --train crease --validate wall \
+    --size 48x27 --rays 256 --points 2 --rounds 1 --out "$work/tune.json" >"$work/tune.md" 2>"$work/progress" || { fail "aogen_tune failed"; cat "$work/progress"; }
+  python3 - "$work/tune.json" <<'PY' || fail "tune.json checks"
+import json, math, sys
+r = json.load(open(sys.argv[1]))
+g, s = r["variants"]
+assert g["variants"] == ["gtao-1x2-half-noblur-gbufworld-std-persp-cs"] and g["evaluations"] == 8, g  # 2^3 settings
+assert s["evaluations"] == 4, s                                                                      # 2^2
+assert g["best"]["strength"] in (0.25, 3.0) and g["best"]["radius_scale"] in (0.5, 2.0), g["best"]  # grid corners
+assert all(abs(g["defaults"][k] - x) < 1e-7 for k, x in {"radius_scale": 0.78125, "strength": 1.109375, "thickness_bias": 0.075}.items()), g["defaults"]
+for v in (g, s):
+    for k in ("train_rmse", "validate_rmse", "default_train_rmse", "default_validate_rmse"):
+        assert 0 < v[k] < 0.5 and math.isfinite(v[k]), (k, v[k])
+PY
+  grep -q "| \`gtao-1x2-half-noblur-gbufworld-std-persp-cs\` | radius_scale, strength, thickness_bias |" "$work/tune.md" || fail "the table lacks the GTAO row"
   ;;
 *) echo "unknown case $case"; exit 2 ;;
 esac
