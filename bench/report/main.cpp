@@ -12,6 +12,7 @@
 // Progress goes to stderr. A bad argument, scene or variant is one line on stderr and
 // exit status 1 (2 for command-line syntax), before anything is written; every file is
 // written to a temporary name and renamed.
+#include <aogen_report/arguments.hpp>
 #include <aogen_report/markdown.hpp>
 #include <aogen_report/suite_report.hpp>
 
@@ -39,27 +40,11 @@ namespace {
 
 using aogen::tools::json_reader;
 
-std::vector<std::string> comma_list(const std::string& text)
-{
-    std::vector<std::string> out;
-    for (const std::string& item : aogen::detail::split(text, ','))
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
-bool ends_with(const std::string& s, const std::string& suffix)
-{
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-// Built-in names or scene JSON files; empty: every built-in scene.
-std::vector<aogen::scenes::scene> load_scenes(const std::string& list)
-{
-    std::vector<aogen::scenes::scene> out;
-    const std::vector<std::string> items = list.empty() ? aogen::scenes::builtin_scene_names() : comma_list(list);
-    for (const std::string& item : items) out.push_back(ends_with(item, ".json") ? aogen::scenes::load_scene(item) : aogen::scenes::builtin_scene(item));
-    return out;
-}
+using aogen_report::comma_list;
+using aogen_report::ends_with;
+using aogen_report::grid_for_rays;
+using aogen_report::load_scenes;
+using aogen_report::parse_size;
 
 // A variant spec file (see `aogen generate --variants`) or canonical names; empty: the
 // default matrix.
@@ -73,27 +58,6 @@ std::vector<aogen::variant> load_variants(const std::string& list)
     std::vector<aogen::variant> out;
     for (const std::string& name : comma_list(list)) aogen::append_unique(out, aogen::variant_from_name(name));
     return out;
-}
-
-void parse_size(const std::string& text, int& width, int& height)
-{
-    const std::vector<std::string> parts = aogen::detail::split(text, 'x');
-    const auto number = [&](const std::string& s) {
-        if (s.empty() || s.size() > 5 || s.find_first_not_of("0123456789") != std::string::npos) return -1;
-        return std::stoi(s);
-    };
-    width = parts.size() == 2 ? number(parts[0]) : -1;
-    height = parts.size() == 2 ? number(parts[1]) : -1;
-    if (width < 8 || height < 8 || width > 4096 || height > 4096)
-        aogen::fail("--size", aogen::quote(text) + " is not a size", "valid: WIDTHxHEIGHT, each 8..4096, e.g. 320x180");
-}
-
-// Rays per pixel = grid², grid even (stratum pairs) and >= 32: at least 1024 rays.
-int grid_for_rays(int rays)
-{
-    for (int g = 32; g <= 256; g += 2)
-        if (g * g == rays) return g;
-    aogen::fail("--rays", std::to_string(rays) + " is not a valid ray count", "valid: the square of an even number from 32 to 256: 1024, 1156, ..., 4096, ..., 65536");
 }
 
 // A scene name as a file name: letters, digits, '-' and '_' kept, anything else '_'

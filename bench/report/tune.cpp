@@ -9,6 +9,7 @@
 // one set of values, the best for all of them together — what a product default must be.
 //
 // Prints a Markdown table (BENCHMARKS.md keeps them) and writes every figure to --out.
+#include <aogen_report/arguments.hpp>
 #include <aogen_report/tune.hpp>
 
 #include <aogen_tools/files.hpp>
@@ -22,24 +23,11 @@
 
 namespace {
 
-std::vector<std::string> split_list(const std::string& s)
-{
-    std::vector<std::string> out(1);
-    for (char c : s) {
-        if (c == ',') out.emplace_back();
-        else out.back().push_back(c);
-    }
-    return out;
-}
-
+// The scenes of `list` (aogen_report's --scenes form) at w × h.
 std::vector<aogen::scenes::scene> load(const std::string& list, int w, int h)
 {
-    std::vector<aogen::scenes::scene> out;
-    for (const std::string& n : split_list(list)) {
-        aogen::scenes::scene s = aogen::scenes::builtin_scene(n);
-        s.camera.width = w, s.camera.height = h;
-        out.push_back(std::move(s));
-    }
+    std::vector<aogen::scenes::scene> out = aogen_report::load_scenes(list);
+    for (aogen::scenes::scene& s : out) s.camera.width = w, s.camera.height = h;
     return out;
 }
 
@@ -62,10 +50,10 @@ int main(int argc, char** argv)
     int rays = 1024, points = 5, rounds = 3;
     bool joint = false;
     app.add_option("--variants", variants, "canonical names, comma-separated")->capture_default_str();
-    app.add_option("--train", train, "built-in scenes the search fits")->capture_default_str();
-    app.add_option("--validate", validate, "built-in scenes it is checked on")->capture_default_str();
+    app.add_option("--train", train, "built-in scenes or scene files the search fits")->capture_default_str();
+    app.add_option("--validate", validate, "built-in scenes or scene files it is checked on")->capture_default_str();
     app.add_option("--size", size, "WxH of every scene")->capture_default_str();
-    app.add_option("--rays", rays, "reference rays per pixel (the square of an integer)")->capture_default_str();
+    app.add_option("--rays", rays, "reference rays per pixel (the square of an even number, 32..256)")->capture_default_str();
     app.add_option("--points", points, "values per axis per round")->capture_default_str()->check(CLI::Range(2, 9));
     app.add_option("--rounds", rounds, "narrowing rounds")->capture_default_str()->check(CLI::Range(1, 8));
     app.add_option("--device", device, "the Vulkan device whose name contains this");
@@ -75,16 +63,14 @@ int main(int argc, char** argv)
     const auto start = std::chrono::steady_clock::now();
     try {
         int w = 0, h = 0;
-        if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
-            aogen::fail("--size", aogen::quote(size) + " is not a size", "valid: WIDTHxHEIGHT, each 1..16384");
-        const int grid = int(std::lround(std::sqrt(double(rays))));
-        if (grid * grid != rays || grid < 4) aogen::fail("--rays", std::to_string(rays) + " is not a square of an integer >= 4", "valid: e.g. 1024, 4096");
+        aogen_report::parse_size(size, w, h);
+        const int grid = aogen_report::grid_for_rays(rays);
         aogen::vulkan::device_options o;
         o.name = device;
         aogen::vulkan::context ctx(o);
         nlohmann::json results = nlohmann::json::array();
         std::vector<std::vector<aogen::variant>> groups; // each searched on its own, or all together with --joint
-        for (const std::string& name : split_list(variants)) {
+        for (const std::string& name : aogen_report::comma_list(variants)) {
             if (!joint || groups.empty()) groups.emplace_back();
             groups.back().push_back(aogen::variant_from_name(name));
         }

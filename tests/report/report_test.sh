@@ -161,7 +161,7 @@ tune)
   # 2 points per axis and 1 round, on one training and one validation scene.
   tune="$(dirname "$report")/aogen_tune"
   "$tune" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs,ssao-s8-half-box-gbufworld-std-persp-cs --train crease --validate wall \
-    --size 48x27 --rays 256 --points 2 --rounds 1 --out "$work/tune.json" >"$work/tune.md" 2>"$work/progress" || { fail "aogen_tune failed"; cat "$work/progress"; }
+    --size 48x27 --rays 1024 --points 2 --rounds 1 --out "$work/tune.json" >"$work/tune.md" 2>"$work/progress" || { fail "aogen_tune failed"; cat "$work/progress"; }
   python3 - "$work/tune.json" <<'PY' || fail "tune.json checks"
 import json, math, sys
 r = json.load(open(sys.argv[1]))

@@ -8,6 +8,7 @@
 #include <aogen/compile.hpp>
 
 #include <catch2/catch.hpp>
+#include <spirv_cross/spirv_cross.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -28,12 +29,13 @@ std::vector<variant> fp16_variants()
     return out;
 }
 
-// Whether SPIR-V module `words` declares OpCapability Float16.
+// Whether SPIR-V module `words` declares the Float16 capability, as SPIRV-Cross reads it (an
+// oracle of its own, not passes.hpp's scan that refuses such modules on devices without it).
 bool declares_float16(const std::vector<uint32_t>& words)
 {
-    for (size_t i = 5; i + 1 < words.size() && (words[i] >> 16) != 0; i += words[i] >> 16)
-        if ((words[i] & 0xffffu) == 17 && words[i + 1] == 9) return true;
-    return false;
+    const spirv_cross::Compiler reader(words);
+    const auto& caps = reader.get_declared_capabilities();
+    return std::find(caps.begin(), caps.end(), spv::CapabilityFloat16) != caps.end();
 }
 
 } // namespace

@@ -31,7 +31,6 @@
 #include <aogen/vulkan/chain.hpp>
 
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -83,41 +82,30 @@ struct tune_result {
 
 namespace detail {
 
-// One scene, ready for any variant: its reference traced once, and a G-buffer uploaded once
-// per normal space and depth convention the variants read.
+// One scene, ready for any variant: its reference traced once, and its G-buffers made and
+// uploaded once per normal space and depth convention the variants read (run.hpp's
+// gbuffer_cache, as the report does).
 class tune_scene {
 public:
-    tune_scene(const aogen::scenes::scene& s, int grid) : prepared_(prepare(s, grid)) {}
+    tune_scene(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, int grid)
+        : prepared_(prepare(s, grid)), gbuffers_(ctx, prepared_.scene, *prepared_.tracer)
+    {
+    }
 
     // The RMSE of variant `v` (chain `c`) with `settings` against this scene's reference.
     double rmse(aogen::vulkan::context& ctx, const aogen::variant& v, const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& settings)
     {
-        const aogen::vulkan::gpu_gbuffer& g = gbuffer_for(ctx, v);
         const int W = prepared_.truth.width, H = prepared_.truth.height;
         const auto [tw, th] = aogen::vulkan::target_size(v, W, H);
         const aogen::vulkan::chain_result out =
-            aogen::vulkan::bound_chain(ctx, c.passes(), g, aogen::vulkan::inputs_for(v, settings, tw, th), tw, th).run_once();
+            aogen::vulkan::bound_chain(ctx, c.passes(), gbuffers_.gpu(v), aogen::vulkan::inputs_for(v, settings, tw, th), tw, th).run_once();
         return compare(upsample(out.ao, tw, th, tw == W ? 1 : 2, W, H), prepared_.truth.ao, prepared_.truth.valid).rmse;
     }
     const aogen::scenes::scene& scene() const { return prepared_.scene; }
 
 private:
-    const aogen::vulkan::gpu_gbuffer& gbuffer_for(aogen::vulkan::context& ctx, const aogen::variant& v)
-    {
-        aogen::scenes::gbuffer_options o;
-        o.use_scene_normals = false;
-        o.normals = v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
-        const std::string key = std::to_string(int(o.normals)) + "/" + std::to_string(int(v.depth));
-        auto it = uploaded_.find(key);
-        if (it != uploaded_.end()) return *it->second;
-        const aogen::scenes::scene seen = for_variant(prepared_.scene, v);
-        const aogen::vulkan::gbuffer g =
-            aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(aogen::scenes::render_gbuffer(seen, *prepared_.tracer, o));
-        return *uploaded_.emplace(key, std::make_unique<aogen::vulkan::gpu_gbuffer>(ctx, g)).first->second;
-    }
-
     prepared_scene prepared_;
-    std::map<std::string, std::unique_ptr<aogen::vulkan::gpu_gbuffer>> uploaded_;
+    gbuffer_cache gbuffers_; // refers to prepared_'s scene and tracer: declared after it
 };
 
 using settings_maker = std::function<aogen::vulkan::chain_settings(const aogen::variant&, const aogen::scenes::scene&)>;
@@ -146,8 +134,8 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
         chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, v));
     }
     std::vector<std::unique_ptr<detail::tune_scene>> train, validate;
-    for (const aogen::scenes::scene& s : t.train) require_radius_works(s), train.push_back(std::make_unique<detail::tune_scene>(s, t.grid));
-    for (const aogen::scenes::scene& s : t.validate) require_radius_works(s), validate.push_back(std::make_unique<detail::tune_scene>(s, t.grid));
+    for (const aogen::scenes::scene& s : t.train) require_radius_works(s), train.push_back(std::make_unique<detail::tune_scene>(ctx, s, t.grid));
+    for (const aogen::scenes::scene& s : t.validate) require_radius_works(s), validate.push_back(std::make_unique<detail::tune_scene>(ctx, s, t.grid));
     t.progress(std::to_string(t.variants.size()) + " variants, " + std::to_string(train.size()) + " training and " + std::to_string(validate.size()) +
                " validation scenes ready");
 

@@ -1,0 +1,15 @@
+# bench/device/setup.sh — sourced by the H200 scripts here, from the repository root: unpacks
+# what the device tool carried (carry [".gl", ".carry"]) and sets B (the binaries), L (the log)
+# and /tmp/fakepy (a stand-in plotter: the image has no matplotlib, the PNG is not used).
+# What to carry: build here, pack bin/ (aogen_report, aogen_vulkan_tests), lib/ (what ldd
+# lists beyond the system: embree, assimp, tbb, draco, minizip) and models/ (the assimp test
+# models) into .carry/pack.tar.xz, and the Debian loader debs (libvulkan1, the libglvnd
+# family) into .gl/.
+for f in .gl/*.deb; do dpkg -x "$f" /; done; ldconfig
+mkdir -p /tmp/a && tar -xJf .carry/pack.tar.xz -C /tmp/a
+export LD_LIBRARY_PATH=/tmp/a/lib
+[ -f /usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json ] && export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+mkdir -p /usr/share/assimp/models && cp -r /tmp/a/models/* /usr/share/assimp/models/
+B=/tmp/a/bin
+L=$OUT/log.txt
+printf '#!/bin/bash\n[ "$1" = "-c" ] && exit 0\necho none > "$3"\n' > /tmp/fakepy; chmod +x /tmp/fakepy
