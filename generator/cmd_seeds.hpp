@@ -96,6 +96,7 @@ public:
         nlohmann::ordered_json j;
         j["name"] = p.name;
         j["gtao"] = {{"radius", json_float(p.gtao.radius)}, {"thickness_bias", json_float(p.gtao.thickness_bias)}, {"strength", json_float(p.gtao.strength)},
+                     {"falloff_range", json_float(p.gtao.falloff_range)}, {"thin_occluder", json_float(p.gtao.thin_occluder)},
                      {"slices", p.gtao.slices}, {"steps", p.gtao.steps}, {"half_resolution", p.gtao.half_resolution},
                      {"normals", to_name(p.gtao.normals)}};
         j["blur"] = blur_json(p.blur);

@@ -1,9 +1,10 @@
 // entry_compute.glsl -- the compute entry point of every pass: one invocation per pixel
 // of the pass's output, workgroups of AO_WORKGROUP_X x AO_WORKGROUP_Y. Dispatch
 // ceil(width / AO_WORKGROUP_X) x ceil(height / AO_WORKGROUP_Y) groups for the output
-// image's size; invocations past its edge write nothing.
+// image's size; invocations past its edge write nothing. A pass that defines
+// AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first.
 //
-// Binding AO_BINDING_OUTPUT: the output, a storage image of the AO target size in the
+// Binding AO_BINDING_OUTPUT: the output, a storage image of the pass's output size (the AO target's; the screen's for upsample) in the
 // format AO_OUTPUT_FORMAT (codegen::options::output_format): r8 (R8_UNORM, the default),
 // rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
 // written is ao_finalize(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
@@ -23,6 +24,12 @@ layout(set = 0, binding = AO_BINDING_RAW, r32f) uniform writeonly image2D u_raw;
 
 void main()
 {
+#if defined(AO_PASS_LOADS_TILE)
+    // A pass that shares a tile of inputs across its workgroup (blur_denoise.glsl) loads it
+    // here, in every invocation: the load ends in a barrier, which invocations past the
+    // image's edge must reach too.
+    ao_load_tile();
+#endif
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(u_output);
     if (pixel.x >= size.x || pixel.y >= size.y) return;

@@ -1,7 +1,8 @@
 // gtao.glsl -- ground-truth AO (Jimenez et al. 2016), after Taos' GTAOPass (seed 001),
 // with Jimenez's cosine-weighted slice integral in place of the seed's (see "Why not the
 // seed's formula" below). Uniform block: GtaoUniforms (u.proj, u.inv_proj,
-// u.world_to_view, u.radius, u.thickness_bias, u.strength).
+// u.world_to_view, u.radius, u.thickness_bias, u.strength, u.falloff_range,
+// u.thin_occluder).
 //
 // Per pixel, with P its view-space position, V the direction to the camera and n the
 // normal (normals.glsl; it faces V), for each of AO_GTAO_SLICES slices -- screen
@@ -15,7 +16,8 @@
 //      at half the screen's height), keeping per side the largest cosine between V and the
 //      direction to the sample's view-space point (the highest horizon). Samples off
 //      screen, on background, on the pixel itself, or farther than
-//      radius * (1 + thickness_bias * 10) from P do not raise the horizon;
+//      radius * (1 + thickness_bias * 10) from P do not raise the horizon; nearer ones
+//      fade in over the falloff range (ao_gtao_horizon_cos: falloff, thin occluders);
 //   3. horizon angles h+ = acos(cos+) in [0, pi], h- = -acos(cos-) in [-pi, 0], each
 //      clamped to [n - pi/2, n + pi/2] (the hemisphere around the normal);
 //   4. the slice integral a(h-, n) + a(h+, n) and its value for an unoccluded slice,
@@ -81,24 +83,42 @@
 #error aogen: gtao.glsl needs AO_GTAO_SLICES and AO_GTAO_STEPS
 #endif
 
-// The cosine between V and the direction from P to the scene point under screen
-// position `pos` (full-resolution pixels), or -1 (the lowest horizon) when that sample
-// cannot raise the horizon.
-float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance)
+// The horizon cosine one sample offers: the cosine between V and the direction from P to
+// the scene point under screen position `pos` (full-resolution pixels), moved toward
+// `unoccluded` (the cosine of the hemisphere's edge on that side) by the falloff weight;
+// `unoccluded` itself when the sample cannot raise the horizon.
+//
+// FALLOFF AND THIN OCCLUDERS
+//   The distance d that decides whether a sample counts is measured with the part of its
+//   offset w along the view ray stretched by 1 + u.thin_occluder:
+//       d = |w + u.thin_occluder (w . V) V|,
+//   so an occluder far in front of or behind P (the usual case of a thin pole or leg, whose
+//   depth the heightfield model extends to infinity) stops counting sooner. A sample with
+//   d > d_max does not count; below, its weight is
+//       f = clamp((d_max - d) / (u.falloff_range d_max), 0, 1)
+//   and its horizon is mix(unoccluded, cos, f): 1 well inside the radius, fading to no
+//   occlusion at d_max. With falloff_range 0 the weight is 1 up to d_max (a hard cut-off).
+//   The cosine itself is always the true direction's: the falloff changes how much a
+//   sample counts, never where it is.
+float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance, float unoccluded)
 {
     ivec2 size = ao_depth_size();
-    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return -1.0;
+    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return unoccluded;
     // The surface the sample lands on (depth.glsl's ao_depth_at): on a plane, its point
     // under pos on the slice line; at a silhouette, the nearest texel's own point.
     float depth;
     vec2 at;
     ivec2 q;
-    if (!ao_depth_at(pos, depth, at, q)) return -1.0;
-    if (q == centre_pixel) return -1.0;
+    if (!ao_depth_at(pos, depth, at, q)) return unoccluded;
+    if (q == centre_pixel) return unoccluded;
     vec3 w = ao_view_position(at / vec2(size), depth) - P;
-    float distance = length(w);
-    if (!(distance > 1e-30 && distance <= max_distance)) return -1.0; // NaN and inf fail too
-    return dot(w, V) / distance;
+    float along_view = dot(w, V);
+    float distance = length(w + (u.thin_occluder * along_view) * V);
+    float true_length = length(w);
+    if (!(true_length > 1e-30 && distance <= max_distance)) return unoccluded; // NaN and inf fail too
+    float fade_length = u.falloff_range * max_distance;
+    float weight = fade_length > 0.0 ? clamp((max_distance - distance) / fade_length, 0.0, 1.0) : 1.0;
+    return mix(unoccluded, along_view / true_length, weight);
 }
 
 // The normal projected onto the plane of a slice: (|n_p|, n), n the signed angle of n_p
@@ -188,13 +208,16 @@ float ao_pass(ivec2 target_pixel)
         if (!(projected.x > ao_half(0.0))) continue; // the normal is perpendicular to the slice
 
         // The horizons: the highest cosine on each side (in float: a max of floats; each
-        // cosine comes from 32-bit view positions, the one place precision decides).
-        float cos_ahead = -1.0;
-        float cos_behind = -1.0;
+        // cosine comes from 32-bit view positions, the one place precision decides),
+        // starting from the hemisphere's edges h+- = n +- pi/2: cos(n + pi/2) = -sin n ahead,
+        // cos(n - pi/2) = sin n behind (h- = -acos(cos-)).
+        float sin_n = sin(float(projected.y));
+        float cos_ahead = -sin_n;
+        float cos_behind = sin_n;
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
             vec2 offset = dir * (radius_pixels * (float(j) / float(AO_GTAO_STEPS)));
-            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, p, P, V, max_distance));
-            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, p, P, V, max_distance));
+            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, p, P, V, max_distance, -sin_n));
+            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, p, P, V, max_distance, sin_n));
         }
         ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
         visibility_sum += float(projected.x * integral);

@@ -2,8 +2,12 @@
 // the parameters with the lowest mean RMSE against the ray-traced truth on training scenes,
 // checked on validation scenes the search did not see, beside the report's defaults.
 //
-//   aogen_tune [--variants NAME,...] [--joint] [--train a,b,...] [--validate c,d,...]
+//   aogen_tune [--variants NAME,...] [--joint] [--axes a,b,...] [--train a,b,...] [--validate c,d,...]
 //              [--size WxH] [--rays N] [--points P] [--rounds K] [--device NAME] --out results.json
+//
+// --axes picks the parameters searched (tune.hpp's tune_axes: gtao radius_scale, strength,
+// thickness_bias, falloff_range, thin_occluder; ssao radius_scale, strength); the others
+// keep the report's defaults. Default: all of the technique's.
 //
 // Each variant is searched on its own; with --joint the variants (of one technique) share
 // one set of values, the best for all of them together — what a product default must be.
@@ -49,6 +53,7 @@ int main(int argc, char** argv)
     std::string size = "320x180", device, out;
     int rays = 1024, points = 5, rounds = 3;
     bool joint = false;
+    std::string axes;
     app.add_option("--variants", variants, "canonical names, comma-separated")->capture_default_str();
     app.add_option("--train", train, "built-in scenes or scene files the search fits")->capture_default_str();
     app.add_option("--validate", validate, "built-in scenes or scene files it is checked on")->capture_default_str();
@@ -57,6 +62,7 @@ int main(int argc, char** argv)
     app.add_option("--points", points, "values per axis per round")->capture_default_str()->check(CLI::Range(2, 9));
     app.add_option("--rounds", rounds, "narrowing rounds")->capture_default_str()->check(CLI::Range(1, 8));
     app.add_option("--device", device, "the Vulkan device whose name contains this");
+    app.add_option("--axes", axes, "the parameters to search, comma-separated (default: all of the technique's)")->capture_default_str();
     app.add_flag("--joint", joint, "search one set of values for all the variants together (they must share a technique)");
     app.add_option("--out", out, "results.json")->required();
     CLI11_PARSE(app, argc, argv);
@@ -78,6 +84,7 @@ int main(int argc, char** argv)
         for (const std::vector<aogen::variant>& group : groups) {
             aogen_report::tune_settings t;
             t.variants = group;
+            t.axes = aogen_report::comma_list(axes);
             t.train = load(train, w, h), t.validate = load(validate, w, h);
             t.grid = grid, t.points = points, t.rounds = rounds;
             t.progress = [&](const std::string& line) {

@@ -36,9 +36,10 @@
 //                         normal variant declares no binding 2)
 //              3 noise    sampler2D, the noise tile as floats (rgba32f/rgba16f/rg16f)
 //              4 output   storage image, options::output_format (r8 by default; compute only)
-//   blur_x, blur_y, blur_box
+//   blur_x, blur_y, blur_box, blur_denoise, upsample
 //              0 BlurUniforms, 1 depth (full resolution), 2 ao_input sampler2D,
-//              3 output storage image, options::output_format (compute only)
+//              3 output storage image, options::output_format (compute only); the
+//              upsample pass's output is screen-sized, every other pass's the AO target's
 //   Fragment passes write `layout(location = 0) out float`. resources() lists them all.
 //   With options::diagnostics every pass also declares
 //              raw      storage image r32f (binding 5 in the AO pass, 4 in blur passes;
@@ -286,6 +287,8 @@ inline std::vector<std::string> template_files(const variant& v, pass_kind pass,
     case pass_kind::blur_x:
     case pass_kind::blur_y: files.push_back("blur_bilateral.glsl"); break;
     case pass_kind::blur_box: files.push_back("blur_box.glsl"); break;
+    case pass_kind::blur_denoise: files.push_back("blur_denoise.glsl"); break;
+    case pass_kind::upsample: files.push_back("upsample.glsl"); break;
     }
     files.push_back(stage == shader_stage::compute ? "entry_compute.glsl" : "entry_fragment.glsl");
     return files;
@@ -302,7 +305,11 @@ inline std::vector<define> constants(const variant& v, pass_kind pass)
             c.push_back({"AO_BLUR_WEIGHT_" + std::to_string(i), detail::glsl_float(blur_params::bilateral_weights[i])});
     } else if (pass == pass_kind::blur_box) {
         c.push_back({"AO_BLUR_BOX_SIZE", std::to_string(blur_params::box_size)});
-    } else if (v.tech == technique::ssao && v.point_cloud_fallback) {
+    } else if (pass == pass_kind::blur_denoise) {
+        c.push_back({"AO_DENOISE_RADIUS", std::to_string(blur_params::denoise_radius)});
+        for (size_t i = 0; i < blur_params::denoise_weights.size(); ++i)
+            c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), detail::glsl_float(blur_params::denoise_weights[i])});
+    } else if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
         c.push_back({"AO_PC_BACKGROUND_DEPTH", detail::glsl_float(point_cloud::background_depth)});
         c.push_back({"AO_PC_SAME_DEPTH", detail::glsl_float(point_cloud::same_depth_tolerance)});
         c.push_back({"AO_PC_CAVITY_THRESHOLD", detail::glsl_float(point_cloud::cavity_threshold)});

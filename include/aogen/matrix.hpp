@@ -8,10 +8,12 @@
 //   product of long lists cannot overflow): what a tool bounds before it expands a
 //   user's matrix.
 //   default_matrix() is the set `aogen generate` builds when no variant is named:
-//     SSAO 8/16/32/64 samples × blur bilateral/box/none × full/half, compute;
-//     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/none, compute;
+//     SSAO 8/16/32/64 samples × blur bilateral/box/denoise/none × full/half, compute;
+//     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/denoise/none, compute
+//     (half resolution: DESIGN.md's default);
+//     half-resolution variants end with the depth-aware upsample;
 //     and the seeds' own configurations as fragment variants (Taos SSAO, Taos GTAO,
-//     Unique Engine SSAO, the point-cloud viewer's ssao.wgsl).
+//     Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it.
 //
 // USAGE
 //     aogen::variant_matrix m;                  // one value per axis: the default variant
@@ -46,6 +48,7 @@ struct variant_matrix {
     std::vector<ssao_range_check> range_check{ssao_range_check::taos};
     std::vector<ssao_output> output{ssao_output::strength};
     std::vector<bool> fp16{false};
+    std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
 };
 
 // Appends canonical(v) unless an equal variant is already in `out`.
@@ -63,7 +66,7 @@ inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40
     size_t product = 1;
     for (size_t n : {m.techniques.size(), m.ssao_samples.size(), m.gtao_slices.size(), m.gtao_steps.size(), m.blur.size(), m.blur_depth.size(),
                      m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
-                     m.stage.size(), m.range_check.size(), m.output.size(), m.fp16.size()})
+                     m.stage.size(), m.range_check.size(), m.output.size(), m.fp16.size(), m.upsample.size()})
         product = n == 0 ? 0 : std::min(product * std::min(n, cap + 1), cap + 1);
     return product;
 }
@@ -89,11 +92,12 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (pipeline_stage stage : m.stage)
     for (ssao_range_check rc : m.range_check)
     for (ssao_output o : m.output)
-    for (bool fp16 : m.fp16) {
+    for (bool fp16 : m.fp16)
+    for (upsample_mode up : m.upsample) {
         v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
-        v.range_check = rc, v.output = o, v.fp16 = fp16;
+        v.range_check = rc, v.output = o, v.fp16 = fp16, v.upsample = up;
         if (pc && t != technique::ssao) continue;
         validate(v);
         const variant c = canonical(v);
@@ -102,20 +106,21 @@ inline std::vector<variant> expand(const variant_matrix& m)
     return out;
 }
 
-// The seeds' own configurations, as the fragment variants their engines run.
+// The seeds' own configurations, as the fragment variants their engines run (their
+// half-resolution targets without aogen's upsample pass: the seeds have none).
 inline std::vector<variant> seed_variants()
 {
     return {
-        variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth"),     // Taos SSAOPass
-        variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-fs-rawdepth"),     // Taos GTAOPass
-        variant_from_name("ssao-s32-half-bilateral-gbufview-std-persp-fs-powint"),        // Unique Engine UeSSAOPass
+        variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest"), // Taos SSAOPass
+        variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest"), // Taos GTAOPass
+        variant_from_name("ssao-s32-half-bilateral-gbufview-std-persp-fs-powint-nearest"),    // Unique Engine UeSSAOPass
         variant_from_name("ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004"),            // point-cloud ssao.wgsl
     };
 }
 
 inline std::vector<variant> default_matrix()
 {
-    const std::vector<blur_mode> all_blurs{blur_mode::bilateral, blur_mode::box, blur_mode::none};
+    const std::vector<blur_mode> all_blurs{blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
     variant_matrix ssao;
     ssao.ssao_samples = {8, 16, 32, 64};
     ssao.blur = all_blurs;

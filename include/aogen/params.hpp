@@ -7,7 +7,8 @@
 //
 //   ssao_params   hemisphere SSAO (Taos SSAOPass, Unique Engine UeSSAOPass, ssao.wgsl)
 //   gtao_params   ground-truth AO, slice/horizon based (Taos GTAOPass)
-//   blur_params   the denoise pass after either: 7-tap bilateral, 4×4 box, or none
+//   blur_params   the denoise pass after either: 7-tap bilateral, 4×4 box, 5×5 edge-aware
+//                 denoise, or none; the depth term of the depth-aware upsample
 //   presets::     the seeds' configurations, as ssao_preset / gtao_preset bundles
 //
 // Usage:
@@ -139,11 +140,32 @@ enum class blur_mode {
     bilateral,  // Taos 'quality': two-pass separable 7-tap Gaussian with a depth term
     box,        // Taos 'performance': single-pass 4×4 unweighted box average
     none,       // raw AO (ssao.wgsl has no blur)
+    denoise,    // ours: single-pass 5×5 edge-aware filter (blur_denoise.glsl), one pass
+                // instead of the bilateral's two, for XeGTAO's denoiser's cost
 };
-inline constexpr std::array<enum_name<blur_mode>, 3> blur_mode_names{{
+inline constexpr std::array<enum_name<blur_mode>, 4> blur_mode_names{{
     {blur_mode::bilateral, "bilateral"},
     {blur_mode::box, "box"},
     {blur_mode::none, "none"},
+    {blur_mode::denoise, "denoise"},
+}};
+
+// How a half-resolution AO target reaches the screen's resolution (full-resolution
+// variants have nothing to upsample).
+enum class upsample_mode {
+    // A joint bilateral upsample pass (upsample.glsl): each screen pixel blends the AO
+    // target texels around it by their bilinear weights times a depth term against the
+    // pixel's own full-resolution depth, so AO does not bleed across silhouettes the
+    // half-resolution target cannot resolve. The chain's output is screen-sized.
+    depth_aware,
+    // No pass: the chain's output is the half-resolution target, and whoever samples it
+    // upsamples (the report reads target pixel x / 2: nearest, as a renderer without an
+    // upsample pass would show it).
+    nearest,
+};
+inline constexpr std::array<enum_name<upsample_mode>, 2> upsample_mode_names{{
+    {upsample_mode::depth_aware, "depth_aware"},
+    {upsample_mode::nearest, "nearest"},
 }};
 
 // The depth term of the bilateral blur, which stops AO bleeding across silhouettes.
@@ -164,7 +186,7 @@ inline constexpr std::array<enum_name<bilateral_depth>, 2> bilateral_depth_names
 
 static_assert(names::distinct(ssao_output_names) && names::distinct(ssao_range_check_names) &&
               names::distinct(normal_source_names) && names::distinct(blur_mode_names) &&
-              names::distinct(bilateral_depth_names));
+              names::distinct(bilateral_depth_names) && names::distinct(upsample_mode_names));
 
 namespace detail {
 
@@ -198,6 +220,7 @@ inline const char* to_name(ssao_range_check v) { return names::name_of(ssao_rang
 inline const char* to_name(normal_source v) { return names::name_of(normal_source_names, v, "normal_source"); }
 inline const char* to_name(blur_mode v) { return names::name_of(blur_mode_names, v, "blur_mode"); }
 inline const char* to_name(bilateral_depth v) { return names::name_of(bilateral_depth_names, v, "bilateral_depth"); }
+inline const char* to_name(upsample_mode v) { return names::name_of(upsample_mode_names, v, "upsample_mode"); }
 
 // Name -> enum. An unknown name throws aogen::error listing the valid names; `subject`
 // is what the message names (pass the option or JSON path, e.g. "--blur" or "blur.mode").
@@ -220,6 +243,10 @@ inline blur_mode blur_mode_from_name(std::string_view name, std::string_view sub
 inline bilateral_depth bilateral_depth_from_name(std::string_view name, std::string_view subject = "blur.depth")
 {
     return names::value_of(bilateral_depth_names, name, subject);
+}
+inline upsample_mode upsample_mode_from_name(std::string_view name, std::string_view subject = "upsample")
+{
+    return names::value_of(upsample_mode_names, name, subject);
 }
 
 // ---------------------------------------------------------------------------------
@@ -346,6 +373,24 @@ struct gtao_params {
     static constexpr float_range thickness_bias_range{0.0f, 100.0f, false};
     float thickness_bias = 0.075f;
 
+    // Falloff (XeGTAO's falloff range): the share of that cut-off distance d_max over which
+    // a sample's pull on the horizon fades out. A sample at distance d counts with weight
+    // w = clamp((d_max − d) / (falloff_range · d_max), 0, 1): its horizon is moved from the
+    // unoccluded one (the hemisphere's edge) toward its own by w, so an occluder entering
+    // the radius darkens gradually rather than all at once -- no ring where the cut-off
+    // passes through a surface. 0 is the hard cut-off of seed 001; 1 fades from P itself.
+    static constexpr float_range falloff_range_range{0.0f, 1.0f, false};
+    float falloff_range = 0.0f;
+
+    // Thin-occluder compensation: the part of a sample's offset along the view ray counts
+    // (1 + thin_occluder) times in the distance that the cut-off and the falloff measure.
+    // A thin object (a leg, a pole, a railing) covers the horizon over a long depth range
+    // behind it that the heightfield model reads as solid; measuring depth differences as
+    // longer makes samples far in front of or behind P stop counting sooner, so less of
+    // that false shadow remains. 0: plain Euclidean distance (seed 001).
+    static constexpr float_range thin_occluder_range{0.0f, 10.0f, false};
+    float thin_occluder = 0.0f;
+
     // Exponent applied to the averaged visibility: out = visibility^strength; higher
     // means more contrast. Must be > 0 (pow(0, 0) is undefined). Tuned: 1.109 (seed 001:
     // 2.0, which squares the visibility once too often: the fitted power on every scene
@@ -387,6 +432,14 @@ struct blur_params {
     // Side of the box blur's square, in pixels (Taos 'performance': 4×4, unweighted).
     static constexpr int box_size = 4;
 
+    // The denoise filter's 5 × 5 weights are w(x) · w(y) · depth term, with w over offsets
+    // −2..2 = (½, 1, 1, 1, ½) (ours): offsets 4 apart share a phase of the 4 × 4 noise tile,
+    // so each phase of the tile gets the same weight (1 of 4) along each axis and the
+    // tile's pattern averages out exactly on a plane, as under the 4 × 4 box, but centred
+    // on the pixel (the box's window is off by half a pixel). Centre first, then offsets 1, 2.
+    static constexpr int denoise_radius = 2;
+    static constexpr std::array<float, denoise_radius + 1> denoise_weights{1.0f, 1.0f, 0.5f};
+
     // Which blur runs (see blur_mode). DESIGN.md default: bilateral.
     blur_mode mode = blur_mode::bilateral;
 
@@ -399,7 +452,8 @@ struct blur_params {
     static constexpr float_range raw_depth_k_range{0.0f, 1e6f, false};
     float raw_depth_k = 1000.0f;
 
-    // depth == linear: weight · exp(−|Δz_view| · linear_sharpness), per world unit.
+    // depth == linear: weight · exp(−|Δz_view| · linear_sharpness), per world unit. The
+    // denoise filter and the depth-aware upsample use the same term.
     // 10 (ours): a step of 0.1 world units gets weight e^-1 ≈ 0.37. 0 turns it off.
     // A sharpness is an inverse length, so a scene in micrometres needs one in the
     // millions: 10 per unit scaled to an AO radius of 1e-6 is 1e7. The range reaches 1e12
@@ -451,6 +505,8 @@ inline void validate(const gtao_params& p, std::string_view prefix = "gtao")
     using P = gtao_params;
     require_in(field(prefix, "radius"), p.radius, P::radius_range);
     require_in(field(prefix, "thickness_bias"), p.thickness_bias, P::thickness_bias_range);
+    require_in(field(prefix, "falloff_range"), p.falloff_range, P::falloff_range_range);
+    require_in(field(prefix, "thin_occluder"), p.thin_occluder, P::thin_occluder_range);
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
     require_in(field(prefix, "slices"), p.slices, P::slices_range);
     require_in(field(prefix, "steps"), p.steps, P::steps_range);
@@ -538,6 +594,8 @@ inline gtao_preset taos_gtao()
     gtao_preset p{"taos_gtao", {}, taos_quality_blur()};
     p.gtao.radius = 1.0f;
     p.gtao.thickness_bias = 0.1f;
+    p.gtao.falloff_range = 0.0f;  // seed 001: a hard cut-off
+    p.gtao.thin_occluder = 0.0f;   // seed 001: plain distance
     p.gtao.strength = 2.0f;
     p.gtao.slices = 2;  // ours (DESIGN.md default)
     p.gtao.steps = 3;   // ours (DESIGN.md default)

@@ -56,7 +56,7 @@ inline layout::block_desc ssao_block(int samples)
 inline layout::block_desc gtao_block()
 {
     layout::struct_desc s{"GtaoUniforms", camera_members()};
-    for (const char* name : {"radius", "thickness_bias", "strength"}) s.members.push_back({name, "float"});
+    for (const char* name : {"radius", "thickness_bias", "strength", "falloff_range", "thin_occluder"}) s.members.push_back({name, "float"});
     return {s, {}};
 }
 
@@ -122,6 +122,8 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
     w.set("radius", p.radius);
     w.set("thickness_bias", p.thickness_bias);
     w.set("strength", p.strength);
+    w.set("falloff_range", p.falloff_range);
+    w.set("thin_occluder", p.thin_occluder);
     return w.bytes();
 }
 

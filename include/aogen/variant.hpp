@@ -14,8 +14,8 @@
 //   normals, depth, projection, stage; then only the axes that differ from their
 //   default, each a token of its own: `rawdepth` (seed-exact bilateral depth term),
 //   `pc` (point-cloud fallback), `rc004` (seed 004's range check), `powint` (Unique
-//   Engine's power/intensity output), `fp16` (16-bit arithmetic in the AO pass), `wg16x16`
-//   (workgroup size).
+//   Engine's power/intensity output), `fp16` (16-bit arithmetic in the AO pass), `nearest`
+//   (a half-resolution target left for the caller to upsample), `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -115,6 +115,9 @@ struct variant {
     // weights); depth reconstruction, screen positions and sums stay 32-bit. Needs the
     // device's shaderFloat16 (VK_KHR_shader_float16_int8). DESIGN.md default: off.
     bool fp16 = false;
+    // How a half-resolution target reaches the screen (upsample_mode): by the depth-aware
+    // upsample pass (the default; the chain's output is then screen-sized) or not at all.
+    upsample_mode upsample = upsample_mode::depth_aware; // half resolution only
 };
 
 // ---------------------------------------------------------------------------------
@@ -135,6 +138,7 @@ inline void validate(const variant& v)
     names::require_listed(pipeline_stage_names, v.stage, "stage");
     names::require_listed(ssao_range_check_names, v.range_check, "range check");
     names::require_listed(ssao_output_names, v.output, "output");
+    names::require_listed(upsample_mode_names, v.upsample, "upsample");
     require_range("workgroup x", v.workgroup_x, 1, 32);
     require_range("workgroup y", v.workgroup_y, 1, 32);
     if (v.workgroup_x * v.workgroup_y > 1024)
@@ -148,23 +152,36 @@ inline void validate(const variant& v)
 // Passes and their defines
 // ---------------------------------------------------------------------------------
 
-// A variant runs as a chain: the AO pass, then its blur passes.
-enum class pass_kind { ao, blur_x, blur_y, blur_box };
-inline constexpr std::array<enum_name<pass_kind>, 4> pass_kind_names{{
+// A variant runs as a chain: the AO pass, its blur passes, then (half resolution with the
+// depth-aware upsample) the upsample pass, the only one whose output is screen-sized.
+enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample };
+inline constexpr std::array<enum_name<pass_kind>, 6> pass_kind_names{{
     {pass_kind::ao, "ao"},
     {pass_kind::blur_x, "blur_x"},
     {pass_kind::blur_y, "blur_y"},
     {pass_kind::blur_box, "blur_box"},
+    {pass_kind::blur_denoise, "blur_denoise"},
+    {pass_kind::upsample, "upsample"},
 }};
+
+// Does `v` end with the depth-aware upsample pass?
+inline bool has_upsample_pass(const variant& v)
+{
+    return v.half_resolution && v.upsample == upsample_mode::depth_aware;
+}
 
 inline std::vector<pass_kind> passes(const variant& v)
 {
+    std::vector<pass_kind> p{pass_kind::ao};
     switch (v.blur) {
-    case blur_mode::bilateral: return {pass_kind::ao, pass_kind::blur_x, pass_kind::blur_y};
-    case blur_mode::box: return {pass_kind::ao, pass_kind::blur_box};
-    case blur_mode::none: return {pass_kind::ao};
+    case blur_mode::bilateral: p.insert(p.end(), {pass_kind::blur_x, pass_kind::blur_y}); break;
+    case blur_mode::box: p.push_back(pass_kind::blur_box); break;
+    case blur_mode::denoise: p.push_back(pass_kind::blur_denoise); break;
+    case blur_mode::none: break;
+    default: names::fail_unlisted(blur_mode_names, v.blur, "blur");
     }
-    names::fail_unlisted(blur_mode_names, v.blur, "blur");
+    if (has_upsample_pass(v)) p.push_back(pass_kind::upsample);
+    return p;
 }
 
 struct define {
@@ -204,7 +221,7 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
             count("AO_GTAO_SLICES", v.gtao_slices);
             count("AO_GTAO_STEPS", v.gtao_steps);
         }
-    } else if (pass != pass_kind::blur_box) {
+    } else if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
         choice("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth"));
     }
     return d;
@@ -227,6 +244,7 @@ inline variant canonical(variant v)
     if (v.tech != technique::gtao) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
     if (v.blur != blur_mode::bilateral) v.blur_depth = d.blur_depth;
     if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y;
+    if (!v.half_resolution) v.upsample = d.upsample;
     return v;
 }
 
@@ -237,7 +255,8 @@ inline bool operator==(const variant& a, const variant& b)
            x.gtao_steps == y.gtao_steps && x.blur == y.blur && x.blur_depth == y.blur_depth && x.normals == y.normals &&
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
-           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.fp16 == y.fp16;
+           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.fp16 == y.fp16 &&
+           x.upsample == y.upsample;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -245,8 +264,8 @@ namespace detail {
 
 // The short spellings of the axes inside a variant name (the tables above hold the
 // long ones used by JSON and the command line).
-inline constexpr std::array<enum_name<blur_mode>, 3> blur_tokens{{
-    {blur_mode::bilateral, "bilateral"}, {blur_mode::box, "box"}, {blur_mode::none, "noblur"}}};
+inline constexpr std::array<enum_name<blur_mode>, 4> blur_tokens{{
+    {blur_mode::bilateral, "bilateral"}, {blur_mode::box, "box"}, {blur_mode::none, "noblur"}, {blur_mode::denoise, "denoise"}}};
 inline constexpr std::array<enum_name<normal_source>, 3> normal_tokens{{
     {normal_source::gbuffer_world, "gbufworld"}, {normal_source::gbuffer_view, "gbufview"},
     {normal_source::reconstructed, "recon"}}};
@@ -302,6 +321,7 @@ inline std::string to_name(const variant& input)
     if (v.range_check != d.range_check) name += "-rc004";
     if (v.output != d.output) name += "-powint";
     if (v.fp16) name += "-fp16";
+    if (v.upsample != d.upsample) name += "-nearest";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -314,7 +334,7 @@ inline variant variant_from_name(const std::string& name)
     const std::vector<std::string> t = detail::split(name, '-');
     if (t.size() < 8)
         fail(subject, "has " + std::to_string(t.size()) + " tokens, too few",
-             "valid: ssao-s<N>|gtao-<S>x<N>, half|full, bilateral|box|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
+             "valid: ssao-s<N>|gtao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
              "persp|ortho, cs|fs, then extras; aogen list");
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");
@@ -344,11 +364,12 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "rc004") v.range_check = ssao_range_check::seed004;
         else if (x == "powint") v.output = ssao_output::power_intensity;
         else if (x == "fp16") v.fp16 = true;
+        else if (x == "nearest") v.upsample = upsample_mode::nearest;
         else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, nearest, wg<X>x<Y>");
     }
     try {
         validate(v);

@@ -3,7 +3,7 @@
 //
 // aogen's codegen (include/aogen/codegen.hpp) writes, before this file: `#version 450`,
 // the pass's #defines (aogen::defines(variant, pass) in aogen/variant.hpp), the binding
-// numbers (AO_BINDING_*), compute passes' output format (AO_OUTPUT_FORMAT) and constants taken from aogen's headers (AO_BLUR_*, AO_PC_*),
+// numbers (AO_BINDING_*), compute passes' output format (AO_OUTPUT_FORMAT) and constants taken from aogen's headers (AO_BLUR_*, AO_DENOISE_*, AO_PC_*),
 // and the declaration of the pass's uniform block, instance `u`, made from
 // aogen/uniforms.hpp by aogen::layout::declare (std140, set 0, binding 0). The template
 // files follow in a fixed order; none of them declares the uniform block.
@@ -29,8 +29,8 @@
 #if (defined(AO_PROJECTION_PERSPECTIVE) + defined(AO_PROJECTION_ORTHOGRAPHIC)) != 1
 #error aogen: define exactly one of AO_PROJECTION_PERSPECTIVE AO_PROJECTION_ORTHOGRAPHIC
 #endif
-#if (defined(AO_PASS_AO) + defined(AO_PASS_BLUR_X) + defined(AO_PASS_BLUR_Y) + defined(AO_PASS_BLUR_BOX)) != 1
-#error aogen: define exactly one of AO_PASS_AO AO_PASS_BLUR_X AO_PASS_BLUR_Y AO_PASS_BLUR_BOX
+#if (defined(AO_PASS_AO) + defined(AO_PASS_BLUR_X) + defined(AO_PASS_BLUR_Y) + defined(AO_PASS_BLUR_BOX) + defined(AO_PASS_BLUR_DENOISE) + defined(AO_PASS_UPSAMPLE)) != 1
+#error aogen: define exactly one of AO_PASS_AO AO_PASS_BLUR_X AO_PASS_BLUR_Y AO_PASS_BLUR_BOX AO_PASS_BLUR_DENOISE AO_PASS_UPSAMPLE
 #endif
 #if !defined(AO_BINDING_DEPTH)
 #error aogen: AO_BINDING_DEPTH is not defined (codegen writes the bindings)

@@ -124,8 +124,8 @@ list)
   check "axes list every depth convention" grep -q "standard, reversed, reversed_infinite" "$work/axes.txt"
   check "axes list XeGTAO's quality presets" grep -qx "GTAO quality presets (XeGTAO's levels; slices x steps): low 1x2 medium 2x2 high 3x3 ultra 9x3" "$work/axes.txt"
   "$aogen" list --variants >"$work/variants.txt"
-  check "the default matrix has 73 variants" test "$(wc -l <"$work/variants.txt")" -eq 73
-  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 73
+  check "the default matrix has 96 variants" test "$(wc -l <"$work/variants.txt")" -eq 96
+  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 96
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004" "$work/variants.txt"
   ;;
 generate)
@@ -139,7 +139,7 @@ assert names == ['$v1', '$v2'], names
 ao = m['variants'][0]
 assert ao['bindings'][0]['kind'] == 'uniform_buffer' and ao['uniforms']['name'] == 'SsaoUniforms', ao['bindings']
 assert ao['uniforms']['size'] == 496 and ao['passes'][0]['workgroup_size'] == [8, 8, 1]
-assert [p['pass'] for p in ao['passes']] == ['ao', 'blur_x', 'blur_y']
+assert [p['pass'] for p in ao['passes']] == ['ao', 'blur_x', 'blur_y', 'upsample']
 fs = m['variants'][1]
 assert [(p['pass'], p['stage']) for p in fs['passes']] == [('ao', 'vertex'), ('ao', 'fragment'), ('blur_box', 'vertex'), ('blur_box', 'fragment')]
 assert not any(b['binding'] == 2 for b in fs['bindings']), 'reconstructed normals declare no normal buffer'
@@ -182,7 +182,7 @@ generate_default)
   # real compiler: SPIR-V by spirv-val, GLSL and ESSL by glslangValidator, HLSL by
   # glslang's HLSL front end. MSL has no compiler on Linux: it must name its entry point.
   "$aogen" generate --quiet --out "$work/all"
-  check "73 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 73"
+  check "96 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 96"
   cd "$work/all"
   declare -A seen
   checked=0

@@ -53,7 +53,7 @@ spv::ImageFormat spirv_format(const std::string& name)
 std::vector<aogen::variant> compute_variants()
 {
     using namespace aogen;
-    std::vector<variant> vs(5);
+    std::vector<variant> vs(6);
     vs[1].tech = technique::gtao;
     vs[2].blur = blur_mode::box;
     vs[2].half_resolution = false;
@@ -62,6 +62,8 @@ std::vector<aogen::variant> compute_variants()
     vs[4].tech = technique::gtao;
     vs[4].blur = blur_mode::box;
     vs[4].depth = depth_convention::reversed_infinite;
+    vs[5].tech = technique::gtao;
+    vs[5].blur = blur_mode::denoise; // its shared-memory tile, and the upsample pass after it
     for (const variant& v : vs) REQUIRE(v.stage == pipeline_stage::compute);
     return vs;
 }
@@ -108,7 +110,7 @@ TEST_CASE("codegen+glslang: every output format compiles, and the SPIR-V's stora
                 CHECK(image.binding == s.resources.back().binding);
                 CHECK(image.format == spirv_format(o.output_format));
             }
-        CHECK(shaders == 13); // 3 + 3 + 2 + 3 + 2 passes
+        CHECK(shaders == 20); // 4 + 4 + 2 + 4 + 3 + 3 passes (half resolution ends with the upsample)
     }
 }
 
@@ -134,7 +136,7 @@ TEST_CASE("codegen+compile: rgba8 compute variants compile to ESSL 310, which gl
             CHECK(version == 310);
             CHECK(profile == EEsProfile);
         }
-    CHECK(shaders == 13);
+    CHECK(shaders == 20);
 
     // The default, r8, is refused for essl, naming the image; r32f and rgba16f are ES formats too.
     const aogen::variant v;

@@ -30,7 +30,7 @@ std::vector<variant> broad_set()
     m.techniques = {technique::ssao, technique::gtao};
     m.ssao_samples = {1, 16};
     m.gtao_slices = {1, 3};
-    m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::none};
+    m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
     m.blur_depth = {bilateral_depth::linear, bilateral_depth::seed_raw};
     m.normals = {normal_source::gbuffer_world, normal_source::reconstructed};
     m.point_cloud_fallback = {false, true};
@@ -110,9 +110,11 @@ TEST_CASE("codegen: passes, stages, names and order", "[codegen]")
         }
     }
     variant v;
-    CHECK(codegen::generate(v).size() == 3);
+    CHECK(codegen::generate(v).size() == 4); // ao, blur_x, blur_y, upsample
     v.blur = blur_mode::box;
     v.stage = pipeline_stage::fragment;
+    CHECK(codegen::generate(v).size() == 6); // (vertex, fragment) for ao, blur_box, upsample
+    v.upsample = upsample_mode::nearest;
     CHECK(codegen::generate(v).size() == 4);
 }
 
@@ -325,7 +327,7 @@ TEST_CASE("codegen: invalid input is an aogen::error", "[codegen]")
     CHECK_THAT(error_of([&] { codegen::generate(v); }), Contains("point-cloud fallback"));
     v = variant{};
     CHECK_THAT(error_of([&] { codegen::resources(v, pass_kind::blur_box, shader_stage::compute); }),
-               Contains("pass: blur_box is not a pass of ssao-s16-half-bilateral-gbufworld-std-persp-cs (valid: ao, blur_x, blur_y)"));
+               Contains("pass: blur_box is not a pass of ssao-s16-half-bilateral-gbufworld-std-persp-cs (valid: ao, blur_x, blur_y, upsample)"));
     CHECK_THAT(error_of([&] { codegen::template_files(v, pass_kind::ao, shader_stage::fragment); }),
                Contains("shader stage: fragment is not a stage of a compute variant (valid: compute)"));
     v.stage = pipeline_stage::fragment;

@@ -133,6 +133,9 @@ TEST_CASE("params: Taos GTAO preset holds seed 001's numbers", "[params]")
     CHECK(p.gtao.radius == 1.0f);
     CHECK(p.gtao.thickness_bias == 0.1f);
     CHECK(p.gtao.strength == 2.0f);
+    // Seed 001 has a hard cut-off and plain distances: no falloff, no thin-occluder term.
+    CHECK(p.gtao.falloff_range == 0.0f);
+    CHECK(p.gtao.thin_occluder == 0.0f);
     // Slices × steps: DESIGN.md's default.
     CHECK(p.gtao.slices == 2);
     CHECK(p.gtao.steps == 3);
@@ -250,7 +253,7 @@ TEST_CASE("params: messages read <struct>.<field>: <value> <problem> (valid: <ra
     aogen::blur_params b;
     b.mode = static_cast<aogen::blur_mode>(7);
     CHECK(error_of([&] { aogen::validate(b); }) ==
-          "blur.mode: 7 is not a valid value (valid: bilateral, box, none)");
+          "blur.mode: 7 is not a valid value (valid: bilateral, box, none, denoise)");
 
     // A caller reading nested input names its own prefix.
     s = {};
@@ -345,6 +348,8 @@ TEST_CASE("params: every gtao field rejects bad values and accepts its bounds", 
         {"gtao.radius", P::radius_range, [](P& p, float v) { p.radius = v; }},
         {"gtao.thickness_bias", P::thickness_bias_range, [](P& p, float v) { p.thickness_bias = v; }},
         {"gtao.strength", P::strength_range, [](P& p, float v) { p.strength = v; }},
+        {"gtao.falloff_range", P::falloff_range_range, [](P& p, float v) { p.falloff_range = v; }},
+        {"gtao.thin_occluder", P::thin_occluder_range, [](P& p, float v) { p.thin_occluder = v; }},
     });
     check_int_fields<P>({
         {"gtao.slices", P::slices_range, [](P& p, int v) { p.slices = v; }},
@@ -375,7 +380,7 @@ TEST_CASE("params: every blur field rejects bad values and accepts its bounds", 
     p = {};
     p.mode = static_cast<aogen::blur_mode>(-5);
     CHECK_THAT(error_of([&] { aogen::validate(p); }),
-               Contains("blur.mode: -5 is not a valid value") && Contains("(valid: bilateral, box, none)"));
+               Contains("blur.mode: -5 is not a valid value") && Contains("(valid: bilateral, box, none, denoise)"));
 
     // Every mode and depth term validates.
     for (auto mode : {aogen::blur_mode::bilateral, aogen::blur_mode::box, aogen::blur_mode::none})
@@ -425,9 +430,9 @@ TEST_CASE("params: enum names round-trip", "[params]")
 TEST_CASE("params: unknown names and values are errors listing the valid names", "[params]")
 {
     CHECK(error_of([] { aogen::blur_mode_from_name("gaussian"); }) ==
-          "blur.mode: 'gaussian' is not a known name (valid: bilateral, box, none)");
+          "blur.mode: 'gaussian' is not a known name (valid: bilateral, box, none, denoise)");
     CHECK(error_of([] { aogen::blur_mode_from_name("Bilateral", "--blur"); }) ==
-          "--blur: 'Bilateral' is not a known name (valid: bilateral, box, none)");
+          "--blur: 'Bilateral' is not a known name (valid: bilateral, box, none, denoise)");
     CHECK_THAT(error_of([] { aogen::bilateral_depth_from_name(""); }),
                Contains("blur.depth: '' is not a known name") && Contains("seed_raw, linear"));
     CHECK_THAT(error_of([] { aogen::ssao_range_check_from_name("seed"); }),
@@ -438,8 +443,8 @@ TEST_CASE("params: unknown names and values are errors listing the valid names",
                Contains("'world' is not a known name") &&
                    Contains("gbuffer_world, gbuffer_view, reconstructed"));
 
-    CHECK(error_of([] { aogen::to_name(static_cast<aogen::blur_mode>(3)); }) ==
-          "blur_mode: 3 is not a valid value (valid: bilateral, box, none)");
+    CHECK(error_of([] { aogen::to_name(static_cast<aogen::blur_mode>(4)); }) ==
+          "blur_mode: 4 is not a valid value (valid: bilateral, box, none, denoise)");
     CHECK_THAT(error_of([] { aogen::to_name(static_cast<aogen::ssao_output>(-1)); }),
                Contains("ssao_output: -1 is not a valid value"));
 }

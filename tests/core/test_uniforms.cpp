@@ -115,14 +115,22 @@ TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[unifor
 
 TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[uniforms]")
 {
-    CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 224);
-    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 220);
-    CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 224);
+    // 208 bytes of camera members, then five floats: 228, padded to a vec4 under std140 and cbuffer rules.
+    CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 240);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 228);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 240);
     const std::vector<uint8_t> bytes =
         uniforms::pack_gtao(presets::taos_gtao().gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
     CHECK(float_at(bytes, 208) == 1.0f);  // radius (seed 001)
     CHECK(float_at(bytes, 212) == 0.1f);  // thickness bias
     CHECK(float_at(bytes, 216) == 2.0f);  // strength exponent
+    CHECK(float_at(bytes, 220) == 0.0f);  // falloff range: seed 001's hard cut-off
+    CHECK(float_at(bytes, 224) == 0.0f);  // thin-occluder compensation: none
+    gtao_params g = presets::taos_gtao().gtao;
+    g.falloff_range = 0.625f, g.thin_occluder = 1.5f;
+    const std::vector<uint8_t> tuned = uniforms::pack_gtao(g, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
+    CHECK(float_at(tuned, 220) == 0.625f);
+    CHECK(float_at(tuned, 224) == 1.5f);
 }
 
 TEST_CASE("Packing rejects a kernel of the wrong size and invalid params", "[uniforms]")

@@ -137,7 +137,13 @@ TEST_CASE("variant: each pass gets exactly one define per choice axis", "[varian
     CHECK(has("AO_PROJECTION_ORTHOGRAPHIC", ""));
     CHECK(has("AO_POINT_CLOUD_FALLBACK", ""));
     CHECK(has("AO_WORKGROUP_X", "8"));
-    CHECK(passes(variant{}) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_x, pass_kind::blur_y});
+    // Half resolution ends with the depth-aware upsample; -nearest and full resolution have none.
+    CHECK(passes(variant{}) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_x, pass_kind::blur_y, pass_kind::upsample});
+    CHECK(passes(variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-nearest")) ==
+          std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_x, pass_kind::blur_y});
+    CHECK(passes(variant_from_name("gtao-2x3-full-denoise-gbufworld-std-persp-cs")) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_denoise});
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x3-full-denoise-gbufworld-std-persp-cs-nearest"),
+                      Catch::Contains("not in canonical form") && Catch::Contains("valid: gtao-2x3-full-denoise-gbufworld-std-persp-cs"));
     // fp16: the AO pass only (the blurs stay 32-bit), and only when asked for.
     const variant half = variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16");
     CHECK(half.fp16);
@@ -180,15 +186,15 @@ TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and
 TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
 {
     const std::vector<variant> m = default_matrix();
-    CHECK(m.size() == 24 + 45 + 4);
+    CHECK(m.size() == 32 + 60 + 4);
     int ssao_cs = 0, gtao_cs = 0, fs = 0;
     for (const variant& v : m) {
         if (v.stage == pipeline_stage::fragment) ++fs;
         else if (v.tech == technique::ssao) ++ssao_cs;
         else ++gtao_cs;
     }
-    CHECK(ssao_cs == 24);
-    CHECK(gtao_cs == 45);
+    CHECK(ssao_cs == 32); // 4 sample counts x 4 blurs x full/half
+    CHECK(gtao_cs == 60); // 5 slice counts x 3 step counts x 4 blurs
     CHECK(fs == 4);
     CHECK(to_name(m.front()) == "ssao-s8-full-bilateral-gbufworld-std-persp-cs");
 }

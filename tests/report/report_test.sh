@@ -133,8 +133,8 @@ assert max(x["rmse"] for x in runs("fov_175", "gtao")) < 0.05, "GTAO darkens the
 assert max(x["rmse"] for x in runs("fov_120", "gtao")) < 0.08, "GTAO darkens the open floor at 120 degrees"
 assert max(x["rmse"] for x in runs("image_8x8", "gtao-")) < 0.12, "half-resolution GTAO too dark at 8x8"
 for case in ("radius_past_screen", "radius_huge"):  # no worse than the largest radius that fits the screen
-    for x in runs(case, ""):
-        assert x["rmse"] <= 1.25 * x["twin_rmse"] + 0.02, (case, x["variant"], x["rmse"], x["twin_rmse"])
+    for x in runs(case, ""):  # (stability.hpp: why 0.03, where the depth-aware upsample improved the twins most)
+        assert x["rmse"] <= 1.25 * x["twin_rmse"] + 0.03, (case, x["variant"], x["rmse"], x["twin_rmse"])
 assert len(runs("sub_millimetre", "")) >= 70  # an AO radius of 1e-6 runs (it was refused)
 assert all(x["depth_max"] <= 3 / 255 for x in cases["depth_conventions"]["runs"])
 PY
@@ -166,15 +166,28 @@ tune)
 import json, math, sys
 r = json.load(open(sys.argv[1]))
 g, s = r["variants"]
-assert g["variants"] == ["gtao-1x2-half-noblur-gbufworld-std-persp-cs"] and g["evaluations"] == 8, g  # 2^3 settings
+assert g["variants"] == ["gtao-1x2-half-noblur-gbufworld-std-persp-cs"] and g["evaluations"] == 32, g  # 2^5 settings
 assert s["evaluations"] == 4, s                                                                      # 2^2
 assert g["best"]["strength"] in (0.25, 3.0) and g["best"]["radius_scale"] in (0.5, 2.0), g["best"]  # grid corners
-assert all(abs(g["defaults"][k] - x) < 1e-7 for k, x in {"radius_scale": 0.78125, "strength": 1.109375, "thickness_bias": 0.075}.items()), g["defaults"]
+assert all(abs(g["defaults"][k] - x) < 1e-7 for k, x in {"radius_scale": 0.78125, "strength": 1.109375, "thickness_bias": 0.075,
+                                                         "falloff_range": 0.0, "thin_occluder": 0.0}.items()), g["defaults"]
 for v in (g, s):
     for k in ("train_rmse", "validate_rmse", "default_train_rmse", "default_validate_rmse"):
         assert 0 < v[k] < 0.5 and math.isfinite(v[k]), (k, v[k])
 PY
-  grep -q "| \`gtao-1x2-half-noblur-gbufworld-std-persp-cs\` | radius_scale, strength, thickness_bias |" "$work/tune.md" || fail "the table lacks the GTAO row"
+  grep -q "| \`gtao-1x2-half-noblur-gbufworld-std-persp-cs\` | radius_scale, strength, thickness_bias, falloff_range, thin_occluder |" "$work/tune.md" ||
+    fail "the table lacks the GTAO row"
+  # --axes: only the named parameters are searched, in the order given; an unknown one is refused by name.
+  "$tune" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --axes thin_occluder,falloff_range --train crease --validate wall \
+    --size 48x27 --rays 1024 --points 2 --rounds 1 --out "$work/axes.json" >"$work/axes.md" 2>"$work/progress" || fail "aogen_tune --axes failed"
+  python3 -c 'import json,sys; g=json.load(open(sys.argv[1]))["variants"][0]; assert g["evaluations"] == 4 and sorted(g["best"]) == ["falloff_range", "thin_occluder"], g' \
+    "$work/axes.json" || fail "--axes did not search just the two named parameters"
+  if "$tune" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --axes bias --train crease --validate wall --out "$work/bad.json" 2>"$work/err"; then
+    fail "an unknown --axes name was accepted"
+  fi
+  grep -q "bias.*is not a parameter of gtao.*valid: radius_scale, strength, thickness_bias, falloff_range, thin_occluder" "$work/err" ||
+    fail "the unknown axis error does not name it and the valid ones: $(cat "$work/err")"
+  [ ! -e "$work/bad.json" ] || fail "a refused search wrote its output"
   ;;
 *) echo "unknown case $case"; exit 2 ;;
 esac

@@ -61,20 +61,26 @@ TEST_CASE("vulkan: half resolution of 101x61 is 51x31, every pixel written, fini
         v.half_resolution = true;
         v.workgroup_x = 16;
         v.workgroup_y = 4;
-        INFO(to_name(v));
-        vulkan::chain c(*ctx, v);
-        const vulkan::chain_result zero = c.run(g, settings_for(proj), {0.0f});
-        const vulkan::chain_result one = c.run(g, settings_for(proj), {1.0f});
-        REQUIRE(zero.width == 51);
-        REQUIRE(zero.height == 31);
-        REQUIRE(zero.ao.size() == 51u * 31u);
-        CHECK(zero.ao == one.ao); // the clear value never shows through
-        for (float a : zero.ao) {
-            REQUIRE(std::isfinite(a));
-            REQUIRE(a >= 0.0f);
-            REQUIRE(a <= 1.0f);
+        // Without the upsample the chain returns the 51x31 target; with it, the 101x61 screen.
+        for (upsample_mode up : {upsample_mode::nearest, upsample_mode::depth_aware}) {
+            v.upsample = up;
+            INFO(to_name(v));
+            const int w = up == upsample_mode::nearest ? 51 : 101, h = up == upsample_mode::nearest ? 31 : 61;
+            CHECK(vulkan::output_size(v, W, H) == std::pair<int, int>{w, h});
+            vulkan::chain c(*ctx, v);
+            const vulkan::chain_result zero = c.run(g, settings_for(proj), {0.0f});
+            const vulkan::chain_result one = c.run(g, settings_for(proj), {1.0f});
+            REQUIRE(zero.width == w);
+            REQUIRE(zero.height == h);
+            REQUIRE(zero.ao.size() == size_t(w) * size_t(h));
+            CHECK(zero.ao == one.ao); // the clear value never shows through
+            for (float a : zero.ao) {
+                REQUIRE(std::isfinite(a));
+                REQUIRE(a >= 0.0f);
+                REQUIRE(a <= 1.0f);
+            }
+            require_clean(*ctx);
         }
-        require_clean(*ctx);
     }
 }
 
@@ -87,7 +93,7 @@ TEST_CASE("vulkan: a chain bound once runs again and again with the same result,
     const mat4 proj = perspective(tan_half_fov_y, float(W) / H, 0.1f, 100.0f);
     const vulkan::gbuffer host = crease(W, H, tan_half_fov_y, proj);
     const vulkan::gpu_gbuffer g(*ctx, host);
-    variant ssao; // bilateral: ao, blur_x, blur_y
+    variant ssao; // bilateral: ao, blur_x, blur_y, upsample
     variant gtao;
     gtao.tech = technique::gtao;
     gtao.blur = blur_mode::box;
@@ -111,7 +117,7 @@ TEST_CASE("vulkan: a chain bound once runs again and again with the same result,
         CHECK(t.warmup_ms >= 20);
         for (size_t c = 0; c < 2; ++c) {
             const vulkan::chain_times& ct = t.chains[c];
-            CHECK(ct.passes.size() == (c == 0 ? 3u : 2u));
+            CHECK(ct.passes.size() == (c == 0 ? 4u : 3u)); // each ends with the upsample
             CHECK(ct.total_ms.size() == 12u); // rounds × iterations
             CHECK(ct.round_ms.size() == 3u);
             for (double ms : ct.total_ms) {

@@ -129,15 +129,16 @@ TEST_CASE("vulkan: a negative strength shows as raw values above 1 in the AO pas
     v.tech = technique::gtao;
     v.blur = blur_mode::box;
     const vulkan::chain_result r = run_with_strength(*ctx, v, c, -1.0f);
-    REQUIRE(r.raw.size() == 2);
+    REQUIRE(r.raw.size() == 3); // ao, blur_box, upsample
     CHECK(r.raw[0].above_one > 0);   // occluded pixels: visibility < 1, so 1 / visibility > 1
     // The crease's corner is well occluded: 1 / visibility lies far above 1 there.
     CHECK(r.raw[0].max_excess > 0.1f);
     CHECK(std::isfinite(r.raw[0].max_excess));
     CHECK(r.raw[0].non_finite() == 0);
     CHECK(r.raw[0].below_zero == 0);
-    // The box blur reads the guarded output: its own values stay in range.
+    // The box blur reads the guarded output: its own values stay in range, and the upsample's.
     CHECK(r.raw[1].out_of_range() == 0);
+    CHECK(r.raw[2].out_of_range() == 0);
     CHECK(r.raw[1].non_finite() == 0);
     for (float a : r.ao) REQUIRE((a >= 0.0f && a <= 1.0f));
     require_clean(*ctx);

@@ -21,7 +21,8 @@
 //   fragment) and back, so record() can follow itself or any other chain. Every record()
 //   starts with a full execution barrier, so its passes never overlap the work recorded
 //   before it and a pass's time is its own, not shared with its neighbour's.
-//   The AO target size is the caller's (chain.hpp's target_size for a variant).
+//   The AO target size is the caller's (chain.hpp's target_size for a variant); every
+//   pass's output has that size but the upsample pass's, which has the G-buffer's.
 //
 // USAGE
 //     aogen::vulkan::pass_pipelines passes(ctx, v);
@@ -75,8 +76,11 @@ public:
     // `counter` counts the raw images of diagnostic passes (one is made on first use if null).
     bound_chain(context& ctx, const pass_pipelines& passes, const gpu_gbuffer& g, const chain_inputs& in, int target_width, int target_height,
                 const raw_counter* counter = nullptr)
-        : ctx_(ctx), passes_(passes), scope_(ctx), width_(target_width), height_(target_height), counter_(counter)
+        : ctx_(ctx), passes_(passes), scope_(ctx), counter_(counter)
     {
+        for (size_t i = 0; i < passes.size(); ++i)
+            sizes_.push_back(passes[i].kind == pass_kind::upsample ? std::pair<int, int>{g.width(), g.height()}
+                                                                   : std::pair<int, int>{target_width, target_height});
         if (in.uniforms.size() != passes.size())
             throw error("vulkan bound chain: uniform bytes for " + std::to_string(in.uniforms.size()) + " passes given to " + passes.name() +
                         " (valid: one block per pass, " + std::to_string(passes.size()) + ")");
@@ -94,8 +98,9 @@ public:
     bound_chain& operator=(const bound_chain&) = delete;
 
     const pass_pipelines& passes() const { return passes_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
+    // The size of the chain's output: the last pass's.
+    int width() const { return sizes_.back().first; }
+    int height() const { return sizes_.back().second; }
     // Timestamps one record() writes: one before the first pass, one after each.
     uint32_t queries() const { return static_cast<uint32_t>(passes_.size() + 1); }
 
@@ -113,7 +118,7 @@ public:
             const image& out = outputs_[i];
             barrier(cb, out, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.layout, 0, use.access, readers, use.stage);
             if (has_raw_) raw_barrier(cb, raws_[i]);
-            passes_.record(cb, i, sets_[i], framebuffers_[i], width_, height_);
+            passes_.record(cb, i, sets_[i], framebuffers_[i], sizes_[i].first, sizes_[i].second);
             barrier(cb, out, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
                     use.stage, readers);
             if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, ts.first + static_cast<uint32_t>(i + 1));
@@ -131,15 +136,15 @@ public:
         const image& last = outputs_.back();
         barrier(cb, last, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
                 VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
-        const buffer ao = sc.read_back(cb, last, width_, height_, 1);
+        const buffer ao = sc.read_back(cb, last, width(), height(), 1);
         barrier(cb, last, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
                 VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
         const buffer counts = has_raw_ ? count_raw(sc, cb) : buffer{};
         sc.submit(cb);
 
         chain_result out;
-        out.width = width_, out.height = height_;
-        out.ao.resize(static_cast<size_t>(width_) * height_);
+        out.width = width(), out.height = height();
+        out.ao.resize(static_cast<size_t>(width()) * height());
         const auto* px = static_cast<const uint8_t*>(ao.mapped);
         for (size_t i = 0; i < out.ao.size(); ++i) out.ao[i] = px[i] / 255.0f;
         for (size_t i = 0; i < passes_.size(); ++i) out.passes.push_back(names::name_of(pass_kind_names, passes_[i].kind, "pass"));
@@ -177,12 +182,13 @@ private:
     {
         const output_use use = passes_.output();
         for (size_t i = 0; i < passes_.size(); ++i) {
-            outputs_.push_back(scope_.make_image(width_, height_, ao_format,
+            const auto [w, h] = sizes_[i];
+            outputs_.push_back(scope_.make_image(w, h, ao_format,
                                                  use.usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT));
             clear_output(cb, outputs_.back(), 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
-            framebuffers_.push_back(passes_.make_framebuffer(scope_, outputs_.back(), width_, height_));
+            framebuffers_.push_back(passes_.make_framebuffer(scope_, outputs_.back(), w, h));
             if (!has_raw_) continue;
-            raws_.push_back(scope_.make_image(width_, height_, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT));
+            raws_.push_back(scope_.make_image(w, h, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT));
             barrier(cb, raws_.back(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, passes_.reader_stage());
         }
@@ -240,7 +246,7 @@ private:
         for (size_t i = 0; i < passes_.size(); ++i) {
             barrier(cb, raws_[i], VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
                     passes_.reader_stage(), VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-            counter_->record(cb, counter_->make_set(pool, raws_[i], counts, stride * i), width_, height_);
+            counter_->record(cb, counter_->make_set(pool, raws_[i], counts, stride * i), sizes_[i].first, sizes_[i].second);
         }
         buffer_barrier(cb, counts, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_TRANSFER_BIT);
@@ -340,7 +346,7 @@ private:
     context& ctx_;
     const pass_pipelines& passes_;
     resource_scope scope_;
-    int width_, height_;
+    std::vector<std::pair<int, int>> sizes_; // per pass: its output's width, height
     bool has_raw_ = false;
     std::vector<std::pair<buffer, size_t>> uniforms_; // per pass: buffer, size
     image noise_;

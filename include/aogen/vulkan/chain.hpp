@@ -22,9 +22,10 @@
 //   shaders read .r either way and the AO is bit-identical; D32 holds only [0, 1], so
 //   other values are an error there); normals as RGBA32F (xyz; ignored by
 //   reconstructed-normal variants); the noise tile as RGBA32F.
-//   Between passes and at the end, the AO is an R8_UNORM image of the AO target size:
-//   the G-buffer's size, or ((w + 1) / 2, (h + 1) / 2) at half resolution (a storage
-//   image for compute, a colour attachment for fragment). run_options::clear fills every
+//   Between passes, the AO is an R8_UNORM image of the AO target size: the G-buffer's
+//   size, or ((w + 1) / 2, (h + 1) / 2) at half resolution (a storage image for compute,
+//   a colour attachment for fragment); a half-resolution variant's upsample pass writes
+//   one of the G-buffer's size (output_size: the size of what the chain returns). run_options::clear fills every
 //   AO image before the passes; running with two clear values and comparing shows that
 //   every pixel was written.
 //
@@ -79,6 +80,13 @@ struct chain_options {
 inline std::pair<int, int> target_size(const variant& v, int w, int h)
 {
     return v.half_resolution ? std::pair<int, int>{(w + 1) / 2, (h + 1) / 2} : std::pair<int, int>{w, h};
+}
+
+// The size of `v`'s output for a G-buffer of w × h: the screen's when the chain ends with
+// the depth-aware upsample pass, the AO target's otherwise.
+inline std::pair<int, int> output_size(const variant& v, int w, int h)
+{
+    return has_upsample_pass(v) ? std::pair<int, int>{w, h} : target_size(v, w, h);
 }
 
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of

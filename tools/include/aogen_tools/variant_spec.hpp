@@ -8,12 +8,14 @@
 // Matrix keys (each a list; an absent key keeps the default variant's value):
 //   technique, samples, slices, steps, blur, bilateral_depth, normals, point_cloud,
 //   depth, projection, resolution (half|full), stage, range_check, output,
-//   precision (fp32|fp16: 16-bit arithmetic in the AO pass, variant extra -fp16).
+//   precision (fp32|fp16: 16-bit arithmetic in the AO pass, variant extra -fp16),
+//   upsample (depth_aware|nearest: how a half-resolution target reaches the screen,
+//   variant extra -nearest).
 //
 // A scene file (`--scene SCENE.json`) says what the renderer has and needs:
 //   {"normals": "gbuffer_world" | "gbuffer_view" | "reconstructed", "point_clouds": false,
 //    "depth": "standard" | "reversed" | "reversed_infinite",
-//    "projection": "perspective" | "orthographic", "blur": "bilateral" | "box" | "none",
+//    "projection": "perspective" | "orthographic", "blur": "bilateral" | "box" | "denoise" | "none",
 //    "half_resolution_ok": true}
 // Every key is optional; unknown keys are errors.
 #pragma once
@@ -104,7 +106,7 @@ inline void require_axes_used(const json_reader& in, const std::vector<technique
 inline variant_matrix matrix_from_json(const json_reader& in)
 {
     in.only_keys({"technique", "samples", "slices", "steps", "blur", "bilateral_depth", "normals", "point_cloud",
-                  "depth", "projection", "resolution", "stage", "range_check", "output", "precision"});
+                  "depth", "projection", "resolution", "stage", "range_check", "output", "precision", "upsample"});
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
     require_axes_used(in, m.techniques);
@@ -122,6 +124,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     if (in.has("range_check")) m.range_check = name_list(in, "range_check", ssao_range_check_names);
     if (in.has("output")) m.output = name_list(in, "output", ssao_output_names);
     if (in.has("precision")) m.fp16 = bool_list(in, "precision", "fp16", "fp32");
+    if (in.has("upsample")) m.upsample = name_list(in, "upsample", upsample_mode_names);
     return m;
 }
 

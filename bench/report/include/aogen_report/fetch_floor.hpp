@@ -45,7 +45,8 @@ inline aogen::variant floor_variant(aogen::variant v)
 // The fetch-only file that stands in for aogen template `path`, or "" when it is kept.
 inline std::string floor_replacement(const std::string& path)
 {
-    const std::array<const char*, 5> replaced{"common/normals.glsl", "ssao.glsl", "gtao.glsl", "blur_bilateral.glsl", "blur_box.glsl"};
+    const std::array<const char*, 7> replaced{"common/normals.glsl", "ssao.glsl",          "gtao.glsl",    "blur_bilateral.glsl",
+                                              "blur_box.glsl",       "blur_denoise.glsl", "upsample.glsl"};
     if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
     const std::string name = path.substr(path.rfind('/') + 1); // floor/ is flat: common/normals.glsl is normals.glsl
     for (const auto& t : floor_embedded::templates)

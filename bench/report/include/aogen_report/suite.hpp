@@ -178,18 +178,20 @@ inline one_run run_once(aogen::vulkan::context& ctx, chain_cache& chains, const 
     }
     const aogen::vulkan::chain& c = chains.get(v);
     r.out = aogen::vulkan::bound_chain(ctx, c.passes(), uploaded, in, tw, th).run_once();
-    r.full = upsample(r.out.ao, tw, th, tw == g.width ? 1 : 2, g.width, g.height);
-    // A target pixel reads full pixel (x·k, y·k), clamped (common/depth.glsl's ao_full_pixel).
-    const int k = v.half_resolution ? 2 : 1;
-    r.must_be_one.assign(size_t(tw) * th, 0);
-    for (int y = 0; y < th; ++y)
-        for (int x = 0; x < tw; ++x) {
+    r.full = upsample(r.out.ao, r.out.width, r.out.height, r.out.width == g.width ? 1 : 2, g.width, g.height);
+    // An output pixel reads full pixel (x·k, y·k), clamped (common/depth.glsl's ao_full_pixel;
+    // k = 1 for a screen-sized output).
+    const int ow = r.out.width, oh = r.out.height;
+    const int k = ow == g.width ? 1 : 2;
+    r.must_be_one.assign(size_t(ow) * oh, 0);
+    for (int y = 0; y < oh; ++y)
+        for (int x = 0; x < ow; ++x) {
             const size_t full = size_t(std::min(y * k, g.height - 1)) * g.width + std::min(x * k, g.width - 1);
             const bool faulted_depth = r.faulted[full] && !std::isfinite(g.depth[full]);
             const bool faulted_normal = r.faulted[full] && v.normals != aogen::normal_source::reconstructed && std::isfinite(g.depth[full]);
             // A zero normal gives AO 1 in the AO pass; a blur may still mix it with its neighbours.
             const bool ao_pass_only = passes(v).size() == 1;
-            r.must_be_one[size_t(y) * tw + x] = !p.truth.valid[full] || faulted_depth || (faulted_normal && ao_pass_only);
+            r.must_be_one[size_t(y) * ow + x] = !p.truth.valid[full] || faulted_depth || (faulted_normal && ao_pass_only);
         }
     return r;
 }

@@ -5,12 +5,10 @@
 //   tune(settings) takes variants of one technique, training scenes and validation scenes,
 //   and searches for the one set of parameter values with the lowest mean RMSE over the
 //   variants and training scenes (each weighted equally, default output: no calibration
-//   afterwards; one variant finds its own best values, several the best common ones) by grid_search.hpp's narrowing grid
-//   (`points` values per axis, `rounds` rounds). The axes (tune_axes):
-//     gtao   radius_scale (the radius as a multiple of the scene's R), strength (the final
-//            power: visibility^strength), thickness_bias (the cut-off radius·(1 + 10·t));
-//     ssao   radius_scale, strength (1 − occlusion·strength); the bias stays 5 % of the
-//            radius, as the presets have it.
+//   afterwards; one variant finds its own best values, several the best common ones) by
+//   grid_search.hpp's narrowing grid (`points` values per axis, `rounds` rounds) over the
+//   axes tune_axes() lists for the technique, or the ones tune_settings::axes names (the
+//   others keep the report's defaults).
 //   The result carries the best point, its training and validation RMSE, and the same two
 //   for the report's defaults (settings.hpp), so what the search buys is read on scenes it
 //   did not see.
@@ -30,6 +28,7 @@
 
 #include <aogen/vulkan/chain.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <string>
@@ -37,31 +36,81 @@
 
 namespace aogen_report {
 
-// The axes tune() searches for `v`'s technique.
-inline std::vector<search_axis> tune_axes(const aogen::variant& v)
+// One parameter tune() can search: its range, the report's default on it (settings.hpp),
+// and how a value reaches the chain's settings for a scene of AO radius R.
+struct tune_axis {
+    search_axis range;
+    double (*default_value)();
+    void (*apply)(aogen::vulkan::chain_settings& c, float R, double x);
+};
+
+// Every axis tune() can search for `v`'s technique:
+//   gtao   radius_scale (the radius as a multiple of the scene's R), strength (the final
+//          power: visibility^strength), thickness_bias (the cut-off radius·(1 + 10·t)),
+//          falloff_range (the share of the cut-off distance a sample fades over),
+//          thin_occluder (how much longer depth offsets count);
+//   ssao   radius_scale, strength (1 − occlusion·strength); the bias keeps its ratio to
+//          the radius, as the presets have it.
+inline std::vector<tune_axis> tune_axes(const aogen::variant& v)
 {
-    if (v.tech == aogen::technique::gtao) return {{"radius_scale", 0.5, 2.0}, {"strength", 0.25, 3.0}, {"thickness_bias", 0.0, 0.6}};
+    using settings = aogen::vulkan::chain_settings;
+    if (v.tech == aogen::technique::gtao)
+        return {
+            {{"radius_scale", 0.5, 2.0}, [] { return double(aogen::gtao_params::radius_per_ao_radius); },
+             [](settings& c, float R, double x) { c.gtao.radius = float(x) * R; }},
+            {{"strength", 0.25, 3.0}, [] { return double(aogen::gtao_params{}.strength); }, [](settings& c, float, double x) { c.gtao.strength = float(x); }},
+            {{"thickness_bias", 0.0, 0.6}, [] { return double(aogen::gtao_params{}.thickness_bias); },
+             [](settings& c, float, double x) { c.gtao.thickness_bias = float(x); }},
+            {{"falloff_range", 0.0, 1.0}, [] { return double(aogen::gtao_params{}.falloff_range); },
+             [](settings& c, float, double x) { c.gtao.falloff_range = float(x); }},
+            {{"thin_occluder", 0.0, 4.0}, [] { return double(aogen::gtao_params{}.thin_occluder); },
+             [](settings& c, float, double x) { c.gtao.thin_occluder = float(x); }},
+        };
     if (v.output == aogen::ssao_output::power_intensity)
         aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, or SSAO with the strength output");
-    return {{"radius_scale", 0.5, 4.0}, {"strength", 0.5, 8.0}};
+    return {
+        {{"radius_scale", 0.5, 4.0}, [] { return 1.0; },
+         [](settings& c, float R, double x) {
+             const float radius = float(x) * R;
+             c.ssao.bias *= radius / c.ssao.radius;
+             c.ssao.radius = radius;
+         }},
+        {{"strength", 0.5, 8.0}, [] { return double(aogen::presets::taos_ssao().ssao.strength); },
+         [](settings& c, float, double x) { c.ssao.strength = float(x); }},
+    };
+}
+
+// The axes of `v`'s technique called `names` (all of them when `names` is empty); an
+// aogen::error naming an unknown one and the valid names.
+inline std::vector<tune_axis> tune_axes(const aogen::variant& v, const std::vector<std::string>& names)
+{
+    const std::vector<tune_axis> all = tune_axes(v);
+    if (names.empty()) return all;
+    std::vector<tune_axis> chosen;
+    for (const std::string& name : names) {
+        auto it = std::find_if(all.begin(), all.end(), [&](const tune_axis& a) { return a.range.name == name; });
+        if (it == all.end()) {
+            std::string valid;
+            for (const tune_axis& a : all) valid += (valid.empty() ? "" : ", ") + a.range.name;
+            aogen::fail("--axes", aogen::quote(name) + " is not a parameter of " + std::string(aogen::names::name_of(aogen::technique_names, v.tech, "technique")), "valid: " + valid);
+        }
+        chosen.push_back(*it);
+    }
+    return chosen;
 }
 
 // The report's default settings for `v` on `s` with the axes' values `x` applied.
-inline aogen::vulkan::chain_settings tuned_settings(const aogen::variant& v, const aogen::scenes::scene& s, const std::vector<double>& x)
+inline aogen::vulkan::chain_settings tuned_settings(const aogen::variant& v, const aogen::scenes::scene& s, const std::vector<tune_axis>& axes,
+                                                    const std::vector<double>& x)
 {
     aogen::vulkan::chain_settings c = default_settings(v, s);
-    const float R = float(s.ao_radius);
-    if (v.tech == aogen::technique::gtao) {
-        c.gtao.radius = float(x[0]) * R, c.gtao.strength = float(x[1]), c.gtao.thickness_bias = float(x[2]);
-    } else {
-        const float bias_ratio = c.ssao.bias / c.ssao.radius;
-        c.ssao.radius = float(x[0]) * R, c.ssao.bias = bias_ratio * c.ssao.radius, c.ssao.strength = float(x[1]);
-    }
+    for (size_t i = 0; i < axes.size(); ++i) axes[i].apply(c, float(s.ao_radius), x[i]);
     return c;
 }
 
 struct tune_settings {
     std::vector<aogen::variant> variants; // one technique; searched jointly: one set of values for all
+    std::vector<std::string> axes;        // the parameters searched (tune_axes' names); empty: all
     std::vector<aogen::scenes::scene> train, validate;
     int grid = 32;  // reference rays per pixel: grid²
     int points = 5; // values per axis per round
@@ -99,7 +148,7 @@ public:
         const auto [tw, th] = aogen::vulkan::target_size(v, W, H);
         const aogen::vulkan::chain_result out =
             aogen::vulkan::bound_chain(ctx, c.passes(), gbuffers_.gpu(v), aogen::vulkan::inputs_for(v, settings, tw, th), tw, th).run_once();
-        return compare(upsample(out.ao, tw, th, tw == W ? 1 : 2, W, H), prepared_.truth.ao, prepared_.truth.valid).rmse;
+        return compare(upsample(out.ao, out.width, out.height, out.width == W ? 1 : 2, W, H), prepared_.truth.ao, prepared_.truth.valid).rmse;
     }
     const aogen::scenes::scene& scene() const { return prepared_.scene; }
 
@@ -125,10 +174,11 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
 {
     if (t.variants.empty()) aogen::fail("tune", "has no variant", "valid: at least one variant");
     tune_result r;
-    r.axes = tune_axes(t.variants.front());
+    const std::vector<tune_axis> axes = tune_axes(t.variants.front(), t.axes);
+    for (const tune_axis& a : axes) r.axes.push_back(a.range), r.default_point.push_back(a.default_value());
     std::vector<std::unique_ptr<aogen::vulkan::chain>> chains;
     for (const aogen::variant& v : t.variants) {
-        if (tune_axes(v).size() != r.axes.size() || v.tech != t.variants.front().tech)
+        if (tune_axes(v).size() != tune_axes(t.variants.front()).size() || v.tech != t.variants.front().tech)
             aogen::fail("tune", aogen::to_name(v) + " is not the technique of " + aogen::to_name(t.variants.front()), "valid: variants of one technique");
         r.variants.push_back(aogen::to_name(v));
         chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, v));
@@ -149,8 +199,8 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
         }
         return sum / double(t.variants.size());
     };
-    const auto at = [](const std::vector<double>& x) {
-        return [x](const aogen::variant& v, const aogen::scenes::scene& s) { return tuned_settings(v, s, x); };
+    const auto at = [&axes](const std::vector<double>& x) {
+        return [&axes, x](const aogen::variant& v, const aogen::scenes::scene& s) { return tuned_settings(v, s, axes, x); };
     };
     const detail::settings_maker defaults = [](const aogen::variant& v, const aogen::scenes::scene& s) { return default_settings(v, s); };
     r.default_train = joint(train, defaults, nullptr);
@@ -167,13 +217,6 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
     });
     r.best = g.best, r.train_rmse = g.value, r.evaluations = g.evaluations;
     r.validate_rmse = joint(validate, at(r.best), &r.variant_validate);
-    // The report's defaults on the axes (settings.hpp).
-    if (t.variants.front().tech == aogen::technique::gtao) {
-        const aogen::gtao_params p;
-        r.default_point = {aogen::gtao_params::radius_per_ao_radius, p.strength, p.thickness_bias};
-    } else {
-        r.default_point = {1.0, aogen::presets::taos_ssao().ssao.strength};
-    }
     return r;
 }
 

@@ -1,0 +1,39 @@
+// floor/blur_denoise.glsl -- the fetch floor of blur_denoise.glsl: the same workgroup tile of
+// (depth, AO) loaded into shared memory (floors are compute kernels), then the 25 taps read
+// from it. No view depth, no weights.
+
+layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+
+#define AO_TILE_WIDTH (AO_WORKGROUP_X + 2 * AO_DENOISE_RADIUS)
+#define AO_TILE_HEIGHT (AO_WORKGROUP_Y + 2 * AO_DENOISE_RADIUS)
+#define AO_PASS_LOADS_TILE
+shared vec2 ao_tile[AO_TILE_WIDTH * AO_TILE_HEIGHT];
+
+ivec2 ao_tile_origin()
+{
+    return ivec2(gl_WorkGroupID.xy) * ivec2(AO_WORKGROUP_X, AO_WORKGROUP_Y) - ivec2(AO_DENOISE_RADIUS);
+}
+
+void ao_load_tile()
+{
+    ivec2 origin = ao_tile_origin();
+    ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
+    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += AO_WORKGROUP_X * AO_WORKGROUP_Y) {
+        ivec2 q = origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH);
+        bool inside = q.x >= 0 && q.y >= 0 && q.x < size.x && q.y < size.y;
+        ao_tile[i] = inside ? vec2(ao_load_depth(ao_full_pixel(q)), texelFetch(u_ao_input, q, 0).r) : vec2(0.0);
+    }
+    barrier();
+}
+
+float ao_pass(ivec2 p)
+{
+    ivec2 t = p - ao_tile_origin();
+    float sum = 0.0;
+    for (int dy = -AO_DENOISE_RADIUS; dy <= AO_DENOISE_RADIUS; ++dy)
+        for (int dx = -AO_DENOISE_RADIUS; dx <= AO_DENOISE_RADIUS; ++dx) {
+            vec2 tap = ao_tile[(t.y + dy) * AO_TILE_WIDTH + t.x + dx];
+            sum += tap.x + tap.y;
+        }
+    return fract(sum);
+}
