@@ -122,10 +122,10 @@ list)
   "$aogen" list >"$work/axes.txt"
   check "axes list the default variant" grep -q "^default variant: ssao-s16-half-bilateral-gbufworld-std-persp-cs$" "$work/axes.txt"
   check "axes list every depth convention" grep -q "standard, reversed, reversed_infinite" "$work/axes.txt"
-  check "axes list XeGTAO's quality presets" grep -qx "GTAO quality presets (XeGTAO's levels; slices x steps): low 1x2 medium 2x2 high 3x3 ultra 9x3" "$work/axes.txt"
+  check "axes list XeGTAO's quality presets" grep -qx "GTAO and VBAO quality presets (XeGTAO's levels; slices x steps): low 1x2 medium 2x2 high 3x3 ultra 9x3" "$work/axes.txt"
   "$aogen" list --variants >"$work/variants.txt"
-  check "the default matrix has 73 variants" test "$(wc -l <"$work/variants.txt")" -eq 73
-  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 73
+  check "the default matrix has 78 variants" test "$(wc -l <"$work/variants.txt")" -eq 78
+  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 78
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004" "$work/variants.txt"
   ;;
 generate)
@@ -182,7 +182,7 @@ generate_default)
   # real compiler: SPIR-V by spirv-val, GLSL and ESSL by glslangValidator, HLSL by
   # glslang's HLSL front end. MSL has no compiler on Linux: it must name its entry point.
   "$aogen" generate --quiet --out "$work/all"
-  check "73 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 73"
+  check "78 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 78"
   cd "$work/all"
   declare -A seen
   checked=0

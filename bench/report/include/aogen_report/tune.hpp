@@ -9,6 +9,7 @@
 //   (`points` values per axis, `rounds` rounds). The axes (tune_axes):
 //     gtao   radius_scale (the radius as a multiple of the scene's R), strength (the final
 //            power: visibility^strength), thickness_bias (the cut-off radius·(1 + 10·t));
+//     vbao   radius_scale, strength, thickness (each sample's depth, a fraction of the radius);
 //     ssao   radius_scale, strength (1 − occlusion·strength); the bias stays 5 % of the
 //            radius, as the presets have it.
 //   The result carries the best point, its training and validation RMSE, and the same two
@@ -41,8 +42,9 @@ namespace aogen_report {
 inline std::vector<search_axis> tune_axes(const aogen::variant& v)
 {
     if (v.tech == aogen::technique::gtao) return {{"radius_scale", 0.5, 2.0}, {"strength", 0.25, 3.0}, {"thickness_bias", 0.0, 0.6}};
+    if (v.tech == aogen::technique::vbao) return {{"radius_scale", 0.5, 2.0}, {"strength", 0.25, 3.0}, {"thickness", 0.05, 2.0}};
     if (v.output == aogen::ssao_output::power_intensity)
-        aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, or SSAO with the strength output");
+        aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, VBAO, or SSAO with the strength output");
     return {{"radius_scale", 0.5, 4.0}, {"strength", 0.5, 8.0}};
 }
 
@@ -53,6 +55,8 @@ inline aogen::vulkan::chain_settings tuned_settings(const aogen::variant& v, con
     const float R = float(s.ao_radius);
     if (v.tech == aogen::technique::gtao) {
         c.gtao.radius = float(x[0]) * R, c.gtao.strength = float(x[1]), c.gtao.thickness_bias = float(x[2]);
+    } else if (v.tech == aogen::technique::vbao) {
+        c.vbao.radius = float(x[0]) * R, c.vbao.strength = float(x[1]), c.vbao.thickness = float(x[2]);
     } else {
         const float bias_ratio = c.ssao.bias / c.ssao.radius;
         c.ssao.radius = float(x[0]) * R, c.ssao.bias = bias_ratio * c.ssao.radius, c.ssao.strength = float(x[1]);
@@ -171,6 +175,9 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
     if (t.variants.front().tech == aogen::technique::gtao) {
         const aogen::gtao_params p;
         r.default_point = {aogen::gtao_params::radius_per_ao_radius, p.strength, p.thickness_bias};
+    } else if (t.variants.front().tech == aogen::technique::vbao) {
+        const aogen::vbao_params p;
+        r.default_point = {aogen::vbao_params::radius_per_ao_radius, p.strength, p.thickness};
     } else {
         r.default_point = {1.0, aogen::presets::taos_ssao().ssao.strength};
     }
