@@ -16,8 +16,9 @@
 //      A sample's surface point S (its front) and S pushed u.thickness away from the camera
 //      along its view ray (its back) are seen from P at two angles; the object is taken to
 //      fill the wedge between them, so the sectors of that wedge are marked occluded in the
-//      slice's 32-bit mask (ao_vbao_sectors). Samples off screen, on background, on the
-//      pixel itself, or whose front lies farther than the radius from P mark nothing;
+//      slice's 32-bit mask (ao_vbao_sectors). Samples off screen (or within half a texel of
+//      its edge), on background, on the pixel itself, whose front lies farther than the
+//      radius from P, or at or below P's tangent plane mark nothing;
 //   3. the slice's visibility is the unmarked share of its sectors, 1 - popcount / 32,
 //      times its unoccluded integral cos n + n sin n (gtao.glsl's), weighted by |n_p|.
 // The visibility is sum |n_p| (1 - popcount / 32) (cos n + n sin n) / sum |n_p| (cos n + n sin n)
@@ -165,16 +166,31 @@ bool ao_vbao_angle(vec3 X, vec3 P, vec3 V, float toward, out ao_half theta)
 // The sectors one sample at screen position `pos` (full-resolution pixels) marks, on the
 // side `toward` of the slice whose projected normal has angle n: its front S and back S -
 // V_S thickness (V_S: toward the camera from S), or 0 when it marks nothing.
-uint ao_vbao_sample(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float toward, ao_half n, float radius)
+uint ao_vbao_sample(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, vec3 normal, float toward, ao_half n, float radius)
 {
     ivec2 size = ao_depth_size();
-    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0u;
+    // On screen, and between the outermost texel centres: in the half texel beyond them
+    // ao_depth_at's clamped 2x2 quad repeats a row or column, reads as one plane, and gives
+    // the border texels' depth at a point half a texel away -- off the surface, above it as
+    // often as below, and above it a sector's worth on a steep plane (GTAO's horizon moves
+    // by little there; a sector is 1/32 of a slice).
+    if (!(pos.x >= 0.5 && pos.y >= 0.5 && pos.x <= float(size.x) - 0.5 && pos.y <= float(size.y) - 0.5)) return 0u;
     float depth;
     vec2 at;
     ivec2 q;
     if (!ao_depth_at(pos, depth, at, q) || q == centre_pixel) return 0u; // depth.glsl, as gtao.glsl
     vec3 front = ao_view_position(at / vec2(size), depth);
-    if (!(length(front - P) <= radius)) return 0u; // beyond the AO radius; NaN and inf fail too
+    vec3 w = front - P;
+    float distance = length(w);
+    if (!(distance <= radius)) return 0u; // beyond the AO radius; NaN and inf fail too
+    // A front at or below P's tangent plane marks nothing: its back lies farther below (the
+    // camera is above that plane, and the back is farther from the camera), so the whole
+    // wedge is outside the hemisphere. Its angle says so only for points on the slice's own
+    // plane; a silhouette texel's centre (ao_depth_at) lies up to half a texel off it, and
+    // its angle from V can then read up to a sector above the hemisphere's edge -- an open
+    // plane would lose a sector near every silhouette. 1e-3: an elevation of 0.06 degrees,
+    // above the rounding of points on the plane, below anything that occludes a sector.
+    if (!(dot(w, normal) > 1e-3 * distance)) return 0u;
     vec3 back = front - ao_view_direction(front) * u.thickness;
     ao_half theta_front, theta_back;
     if (!ao_vbao_angle(front, P, V, toward, theta_front)) return 0u;
@@ -222,8 +238,8 @@ float ao_pass(ivec2 target_pixel)
         uint occluded = 0u;
         for (int j = 1; j <= AO_VBAO_STEPS; ++j) {
             vec2 offset = dir * (radius_pixels * (float(j) / float(AO_VBAO_STEPS)));
-            occluded |= ao_vbao_sample(centre + offset, p, P, V, 1.0, projected.y, radius);
-            occluded |= ao_vbao_sample(centre - offset, p, P, V, -1.0, projected.y, radius);
+            occluded |= ao_vbao_sample(centre + offset, p, P, V, n, 1.0, projected.y, radius);
+            occluded |= ao_vbao_sample(centre - offset, p, P, V, n, -1.0, projected.y, radius);
         }
         float whole = float(projected.x * ao_vbao_slice_unoccluded(projected.y));
         visibility_sum += whole * float(ao_vbao_slice_visible(occluded));
