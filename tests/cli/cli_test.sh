@@ -127,6 +127,8 @@ list)
   check "the default matrix has 78 variants" test "$(wc -l <"$work/variants.txt")" -eq 78
   check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 78
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004" "$work/variants.txt"
+  check "VBAO's High preset is in it, at half and full resolution" grep -qx "vbao-3x3-full-bilateral-gbufworld-std-persp-cs" "$work/variants.txt"
+  check "axes list vbao" grep -q "ssao | gtao | vbao" "$work/axes.txt"
   ;;
 generate)
   v1=ssao-s16-half-bilateral-gbufworld-std-persp-cs
