@@ -189,7 +189,7 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
     s = codegen::generate(v);
     CHECK(s[0].glsl.find("#line 1 \"aogen:VbaoUniforms\"\n" + decl(uniforms::vbao_block())) != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"vbao.glsl\"") != std::string::npos);
-    CHECK(s[0].glsl.find("gtao.glsl") == std::string::npos);
+    CHECK(s[0].glsl.find("#line 1 \"gtao.glsl\"") == std::string::npos);
     v = variant{};
     v.point_cloud_fallback = true; // seed 004's variant still reads SsaoUniforms
     CHECK(codegen::uniform_block(v, pass_kind::ao).root.name == "SsaoUniforms");
