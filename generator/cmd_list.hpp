@@ -33,9 +33,9 @@ struct list_command {
             std::string axis, values, in_name;
         };
         const std::vector<row> rows{
-            {"technique", names::list(technique_names), "ssao | gtao"},
+            {"technique", names::list(technique_names), "ssao | gtao | vbao"},
             {"ssao samples", "1..256 (matrix 8, 16, 32, 64; default 16)", "s<N>"},
-            {"gtao slices x steps", "1..16 x 1..16 (default 2 x 3)", "<slices>x<steps>"},
+            {"gtao, vbao slices x steps", "1..16 x 1..16 (default 2 x 3)", "<slices>x<steps>"},
             {"resolution", "half, full", "half | full"},
             {"blur", names::list(blur_mode_names), "bilateral | box | noblur"},
             {"bilateral depth", names::list(bilateral_depth_names) + " (default linear)", "-rawdepth for seed_raw"},
@@ -57,7 +57,7 @@ struct list_command {
         print("axis", "values", "in a variant name");
         for (const row& r : rows) print(r.axis, r.values, r.in_name);
         std::cout << "\ndefault variant: " << to_name(variant{}) << "\n";
-        std::cout << "\nGTAO quality presets (XeGTAO's levels; slices x steps):";
+        std::cout << "\nGTAO and VBAO quality presets (XeGTAO's levels; slices x steps):";
         for (const quality_preset& p : quality_presets) std::cout << " " << p.name << " " << p.slices << "x" << p.steps;
         std::cout << "\n";
     }

@@ -4,7 +4,7 @@
     python3 plot_error_vs_time.py out/report/results.json out/report/error_vs_time.png
 
 Two panels, default parameters and calibrated (ao^p fitted on the other scenes): a
-scatter on a log time axis, one marker per technique (SSAO circles, GTAO triangles),
+scatter on a log time axis, one marker per technique (SSAO circles, GTAO triangles, VBAO squares),
 filled for compute variants and hollow for fragment ones, and the Pareto front (the
 variants no other beats on both time and error) drawn as a step line with its points
 labelled. The PNG is written to a temporary name and renamed.
@@ -19,8 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 
-MARKERS = {"ssao": "o", "gtao": "^"}
-COLOURS = {"ssao": "#1f77b4", "gtao": "#d62728"}
+MARKERS = {"ssao": "o", "gtao": "^", "vbao": "s"}
+COLOURS = {"ssao": "#1f77b4", "gtao": "#d62728", "vbao": "#2ca02c"}
 
 
 def short(name):

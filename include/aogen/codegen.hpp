@@ -18,7 +18,7 @@
 //       ...
 //
 //   The uniform block is not in the templates: it is declared here from aogen/uniforms.hpp
-//   (ssao_block(samples), gtao_block(), blur_block()) by layout::declare under std140, so
+//   (ssao_block(samples), gtao_block(), vbao_block(), blur_block()) by layout::declare under std140, so
 //   the shader's block and the bytes uniforms::pack_* writes agree by construction. The
 //   binding numbers and the seeds' constants are #defines from this header for the same
 //   reason. `#line 1 "<file>"` before every template makes compiler messages name the
@@ -30,7 +30,7 @@
 //   caller can compile it once.
 //
 // RESOURCES (descriptor set 0; GLSL's combined image samplers)
-//   AO pass    0 uniform block (SsaoUniforms, or GtaoUniforms for gtao)
+//   AO pass    0 uniform block (SsaoUniforms, or GtaoUniforms for gtao, VbaoUniforms for vbao)
 //              1 depth    sampler2D, full resolution, raw depth in .r
 //              2 normals  sampler2D, float xyz, only for G-buffer normals (a reconstructed-
 //                         normal variant declares no binding 2)
@@ -238,6 +238,7 @@ inline layout::block_desc uniform_block(const variant& v, pass_kind pass)
     detail::require_pass(v, pass);
     if (pass != pass_kind::ao) return uniforms::blur_block();
     if (v.tech == technique::gtao) return uniforms::gtao_block();
+    if (v.tech == technique::vbao) return uniforms::vbao_block();
     return uniforms::ssao_block(v.ssao_samples); // the point-cloud fallback too
 }
 
@@ -279,6 +280,8 @@ inline std::vector<std::string> template_files(const variant& v, pass_kind pass,
         files.insert(files.end(), {"common/normals.glsl", "common/noise.glsl"});
         if (v.tech == technique::gtao) {
             files.push_back("gtao.glsl");
+        } else if (v.tech == technique::vbao) {
+            files.push_back("vbao.glsl");
         } else {
             if (v.point_cloud_fallback) files.push_back("ssao_point_cloud.glsl");
             files.push_back("ssao.glsl");

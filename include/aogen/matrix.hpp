@@ -12,8 +12,10 @@
 //     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/denoise/none, compute
 //     (half resolution: DESIGN.md's default);
 //     half-resolution variants end with the depth-aware upsample;
-//     and the seeds' own configurations as fragment variants (Taos SSAO, Taos GTAO,
-//     Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it.
+//     the seeds' own configurations as fragment variants (Taos SSAO, Taos GTAO,
+//     Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it;
+//     and VBAO at quality.hpp's four presets (1×2, 2×2, 3×3, 9×3), half resolution,
+//     bilateral blur, and High (3×3) at full resolution, compute.
 //
 // USAGE
 //     aogen::variant_matrix m;                  // one value per axis: the default variant
@@ -22,6 +24,7 @@
 //     std::vector<aogen::variant> vs = aogen::expand(m);   // 4 variants
 #pragma once
 
+#include "quality.hpp"
 #include "variant.hpp"
 
 #include <algorithm>
@@ -106,6 +109,24 @@ inline std::vector<variant> expand(const variant_matrix& m)
     return out;
 }
 
+// VBAO's share of the default matrix: the four quality presets as a renderer would pick them
+// (half resolution, bilateral blur), and High at full resolution -- five variants, so the
+// report's run time grows by about what five GTAO variants cost.
+inline std::vector<variant> vbao_default_variants()
+{
+    std::vector<variant> out;
+    variant v;
+    v.tech = technique::vbao;
+    for (const quality_preset& p : quality_presets) {
+        apply_quality(v, p);
+        append_unique(out, v);
+    }
+    apply_quality(v, quality_preset_from_name("high"));
+    v.half_resolution = false;
+    append_unique(out, v);
+    return out;
+}
+
 // The seeds' own configurations, as the fragment variants their engines run (their
 // half-resolution targets without aogen's upsample pass: the seeds have none).
 inline std::vector<variant> seed_variants()
@@ -133,6 +154,7 @@ inline std::vector<variant> default_matrix()
     std::vector<variant> out = expand(ssao);
     for (const variant& v : expand(gtao)) append_unique(out, v);
     for (const variant& v : seed_variants()) append_unique(out, v);
+    for (const variant& v : vbao_default_variants()) append_unique(out, v); // last: the others keep their order
     return out;
 }
 

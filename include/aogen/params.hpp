@@ -7,6 +7,7 @@
 //
 //   ssao_params   hemisphere SSAO (Taos SSAOPass, Unique Engine UeSSAOPass, ssao.wgsl)
 //   gtao_params   ground-truth AO, slice/horizon based (Taos GTAOPass)
+//   vbao_params   visibility-bitmask AO: GTAO's slices with a 32-sector mask and a thickness
 //   blur_params   the denoise pass after either: 7-tap bilateral, 4×4 box, 5×5 edge-aware
 //                 denoise, or none; the depth term of the depth-aware upsample
 //   presets::     the seeds' configurations, as ssao_preset / gtao_preset bundles
@@ -414,6 +415,58 @@ struct gtao_params {
 };
 
 // ---------------------------------------------------------------------------------
+// VBAO
+// ---------------------------------------------------------------------------------
+//
+// Visibility-bitmask AO (Therrien, Levesque, Gilet 2023, "Screen Space Indirect Lighting
+// with Visibility Bitmask"; templates/vbao.glsl): GTAO's slices and steps, but instead of
+// one horizon per side each slice keeps a 32-bit mask of occluded sectors, and every sample
+// occludes only the sectors between its front surface and that surface pushed `thickness`
+// away from the camera. Objects are thus `thickness` deep instead of infinitely deep, so
+// what lies behind a thin occluder (under a plank, behind a pole) is not shadowed as
+// GTAO's horizons shadow it. The sectors are cosine-weighted, so with a large thickness it
+// converges to GTAO's integral on heightfields.
+//
+// The defaults are not tuned yet: radius_per_ao_radius is GTAO's tuned multiplier (the same
+// search radius reads the same samples), strength 1 (no exponent) and a thickness of half the
+// radius (ours); `aogen_tune` searches all three (bench/report/tune.hpp).
+struct vbao_params {
+    // World-space sampling radius, as gtao_params::radius: to match AO of radius R, search
+    // radius_per_ao_radius · R.
+    static constexpr float_range radius_range{0.0f, 1e6f, true};
+    static constexpr float radius_per_ao_radius = 0.78125f;
+    float radius = 1.0f;
+
+    // The constant thickness every depth sample is given, as a fraction of `radius`: a sample
+    // occludes the directions from P between its front point and that point moved
+    // thickness · radius farther from the camera along its view ray. Relative to the radius
+    // rather than in world units because the radius already sets the scale of what the AO
+    // sees: the same value works for a scene in micrometres and one in kilometres (the report
+    // and the stability suite scale every length with the AO radius), and the tuner searches
+    // one dimensionless number, as GTAO's thickness_bias. pack_vbao writes the world length
+    // (thickness · radius) into the uniform block. Large values (> ~10) make every sample
+    // infinitely deep: GTAO's horizons. 0 is excluded: nothing would occlude.
+    static constexpr float_range thickness_range{0.0f, 100.0f, true};
+    float thickness = 0.5f;
+
+    // Exponent applied to the visibility: out = visibility^strength (> 0, as GTAO's).
+    static constexpr float_range strength_range{0.0f, 100.0f, true};
+    float strength = 1.0f;
+
+    // Slice directions per pixel and samples per side of each, as GTAO's (variant axes).
+    static constexpr int_range slices_range{1, 16};
+    int slices = 2;
+    static constexpr int_range steps_range{1, 16};
+    int steps = 3;
+
+    // AO at half the input resolution.
+    bool half_resolution = true;
+
+    // Where the normal comes from (projected onto each slice).
+    normal_source normals = normal_source::gbuffer_world;
+};
+
+// ---------------------------------------------------------------------------------
 // Blur
 // ---------------------------------------------------------------------------------
 struct blur_params {
@@ -507,6 +560,19 @@ inline void validate(const gtao_params& p, std::string_view prefix = "gtao")
     require_in(field(prefix, "thickness_bias"), p.thickness_bias, P::thickness_bias_range);
     require_in(field(prefix, "falloff_range"), p.falloff_range, P::falloff_range_range);
     require_in(field(prefix, "thin_occluder"), p.thin_occluder, P::thin_occluder_range);
+    require_in(field(prefix, "strength"), p.strength, P::strength_range);
+    require_in(field(prefix, "slices"), p.slices, P::slices_range);
+    require_in(field(prefix, "steps"), p.steps, P::steps_range);
+    names::require_listed(normal_source_names, p.normals, field(prefix, "normals"));
+}
+
+inline void validate(const vbao_params& p, std::string_view prefix = "vbao")
+{
+    using detail::field;
+    using detail::require_in;
+    using P = vbao_params;
+    require_in(field(prefix, "radius"), p.radius, P::radius_range);
+    require_in(field(prefix, "thickness"), p.thickness, P::thickness_range);
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
     require_in(field(prefix, "slices"), p.slices, P::slices_range);
     require_in(field(prefix, "steps"), p.steps, P::steps_range);

@@ -1,4 +1,4 @@
-// aogen/quality.hpp — named quality presets for GTAO: Low, Medium, High, Ultra.
+// aogen/quality.hpp — named quality presets for GTAO and VBAO: Low, Medium, High, Ultra.
 //
 // WHAT
 //   Engines that ported Intel's XeGTAO expose its four quality levels by name; these are the
@@ -7,7 +7,8 @@
 //       medium  2 × 2
 //       high    3 × 3
 //       ultra   9 × 3
-//   A preset sets only a GTAO variant's slice and step counts; every other axis (resolution,
+//   A preset sets only a GTAO or VBAO variant's slice and step counts (VBAO marches the same
+//   slices and steps, so the same counts cost it about what they cost GTAO); every other axis (resolution,
 //   blur, normals, ...) stays the caller's. `aogen list` prints them, and `aogen generate`'s
 //   manifest names the preset a variant's counts match ("quality").
 //
@@ -50,19 +51,20 @@ inline quality_preset quality_preset_from_name(std::string_view name, std::strin
     fail(std::string(subject), quote(std::string(name)) + " is not a quality preset", "valid: " + valid);
 }
 
-// `v` with the preset's slice and step counts (a GTAO variant's; an aogen::error otherwise:
-// SSAO has no slices).
+// `v` with the preset's slice and step counts (a GTAO or VBAO variant's; an aogen::error
+// otherwise: SSAO has no slices).
 inline void apply_quality(variant& v, const quality_preset& p)
 {
-    if (v.tech != technique::gtao)
-        fail("quality", quote(std::string(p.name)) + " sets GTAO's slices and steps, and the variant is not GTAO", "valid: technique gtao");
+    if (!has_slices(v.tech))
+        fail("quality", quote(std::string(p.name)) + " sets slices and steps, and the variant is " + names::name_of(technique_names, v.tech, "technique"),
+             "valid: technique gtao or vbao");
     v.gtao_slices = p.slices, v.gtao_steps = p.steps;
 }
 
-// The preset whose counts `v` has, or "" (not GTAO, or counts no preset has).
+// The preset whose counts `v` has, or "" (SSAO, or counts no preset has).
 inline std::string quality_name_of(const variant& v)
 {
-    if (v.tech != technique::gtao) return "";
+    if (!has_slices(v.tech)) return "";
     for (const quality_preset& p : quality_presets)
         if (v.gtao_slices == p.slices && v.gtao_steps == p.steps) return p.name;
     return "";

@@ -69,11 +69,12 @@ inline feature_list features(const variant& v, const scene_needs* scene = nullpt
     validate(v);
     feature_list f;
     const bool ssao = v.tech == technique::ssao;
+    const std::string tech = names::name_of(technique_names, v.tech, "technique");
     f.compiled.push_back(ssao ? "ssao: " + std::to_string(v.ssao_samples) + " samples"
-                              : "gtao: " + std::to_string(v.gtao_slices) + " slices x " + std::to_string(v.gtao_steps) + " steps");
+                              : tech + ": " + std::to_string(v.gtao_slices) + " slices x " + std::to_string(v.gtao_steps) + " steps");
     const std::string no_pc = scene ? "the scene has no point clouds" : "not requested (variant without -pc)";
     if (ssao) detail::feature(f, v.point_cloud_fallback, "point-cloud fallback", no_pc);
-    else f.left_out.push_back({"point-cloud fallback", "an SSAO feature; this variant is gtao"});
+    else f.left_out.push_back({"point-cloud fallback", "an SSAO feature; this variant is " + tech});
 
     const bool gbuffer = v.normals != normal_source::reconstructed;
     detail::feature(f, gbuffer, "normal buffer input", scene ? "the renderer has no normal buffer" : "normals are reconstructed");

@@ -13,6 +13,7 @@
 // Blocks:
 //   SsaoUniforms   hemisphere SSAO (seeds 000, 002, 003): camera, kernel[N], settings
 //   GtaoUniforms   GTAO (seed 001): camera and settings; slices and steps are compile-time
+//   VbaoUniforms   VBAO: camera, radius, thickness (world units), strength
 //   BlurUniforms   the bilateral and box blur passes
 //   SsaoUniform    seed 004's block exactly (inv_proj, proj, radius, bias, _pad): 144 bytes
 #pragma once
@@ -57,6 +58,16 @@ inline layout::block_desc gtao_block()
 {
     layout::struct_desc s{"GtaoUniforms", camera_members()};
     for (const char* name : {"radius", "thickness_bias", "strength", "falloff_range", "thin_occluder"}) s.members.push_back({name, "float"});
+    return {s, {}};
+}
+
+// VBAO's block: GtaoUniforms' camera, then its own settings. `thickness` is in world units
+// (pack_vbao multiplies vbao_params::thickness, a fraction of the radius, by the radius), so
+// the shader needs no second multiply and the block says what the shader uses.
+inline layout::block_desc vbao_block()
+{
+    layout::struct_desc s{"VbaoUniforms", camera_members()};
+    for (const char* name : {"radius", "thickness", "strength"}) s.members.push_back({name, "float"});
     return {s, {}};
 }
 
@@ -124,6 +135,19 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
     w.set("strength", p.strength);
     w.set("falloff_range", p.falloff_range);
     w.set("thin_occluder", p.thin_occluder);
+    return w.bytes();
+}
+
+// VbaoUniforms bytes; like GTAO, a 4×4 rotation tile unless told.
+inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
+                                      int noise_size = 4)
+{
+    validate(p);
+    layout::writer w(layout::compute(vbao_block(), rules));
+    detail::set_camera(w, cam, target_size, noise_size);
+    w.set("radius", p.radius);
+    w.set("thickness", p.thickness * p.radius); // at most 1e8: finite
+    w.set("strength", p.strength);
     return w.bytes();
 }
 

@@ -10,6 +10,7 @@
 //   value, e.g.
 //       ssao-s16-half-bilateral-gbufworld-std-persp-cs
 //       gtao-2x3-full-box-recon-rev-ortho-fs
+//       vbao-3x3-half-bilateral-gbufworld-std-persp-cs
 //   The tokens, in order: technique (+ samples, or slices x steps), resolution, blur,
 //   normals, depth, projection, stage; then only the axes that differ from their
 //   default, each a token of its own: `rawdepth` (seed-exact bilateral depth term),
@@ -43,11 +44,17 @@
 
 namespace aogen {
 
-enum class technique { ssao, gtao };
-inline constexpr std::array<enum_name<technique>, 2> technique_names{{
+enum class technique { ssao, gtao, vbao };
+inline constexpr std::array<enum_name<technique>, 3> technique_names{{
     {technique::ssao, "ssao"},
     {technique::gtao, "gtao"},
+    {technique::vbao, "vbao"}, // visibility bitmask (Therrien et al. 2023)
 }};
+
+// Whether technique `t` works in slices and steps per side (GTAO's horizons, VBAO's
+// bitmasks); SSAO counts kernel samples instead. The two share variant::gtao_slices and
+// variant::gtao_steps, their name token <S>x<N> and quality.hpp's presets.
+inline constexpr bool has_slices(technique t) { return t == technique::gtao || t == technique::vbao; }
 
 enum class pipeline_stage { compute, fragment };
 inline constexpr std::array<enum_name<pipeline_stage>, 2> pipeline_stage_names{{
@@ -97,8 +104,8 @@ inline constexpr std::array<enum_name<depth_convention>, 3> depth_convention_nam
 struct variant {
     technique tech = technique::ssao;
     int ssao_samples = 16;     // ssao: 1..256
-    int gtao_slices = 2;       // gtao: 1..16
-    int gtao_steps = 3;        // gtao: steps per side, 1..16
+    int gtao_slices = 2;       // gtao, vbao (has_slices): 1..16
+    int gtao_steps = 3;        // gtao, vbao: steps per side, 1..16
     blur_mode blur = blur_mode::bilateral;
     bilateral_depth blur_depth = bilateral_depth::linear; // bilateral only
     normal_source normals = normal_source::gbuffer_world;
@@ -130,6 +137,9 @@ inline void validate(const variant& v)
     require_range("ssao samples", v.ssao_samples, ssao_params::samples_range.lo, ssao_params::samples_range.hi);
     require_range("gtao slices", v.gtao_slices, gtao_params::slices_range.lo, gtao_params::slices_range.hi);
     require_range("gtao steps", v.gtao_steps, gtao_params::steps_range.lo, gtao_params::steps_range.hi);
+    static_assert(vbao_params::slices_range.lo == gtao_params::slices_range.lo && vbao_params::slices_range.hi == gtao_params::slices_range.hi &&
+                      vbao_params::steps_range.lo == gtao_params::steps_range.lo && vbao_params::steps_range.hi == gtao_params::steps_range.hi,
+                  "vbao shares gtao's slice and step fields, so their ranges must agree");
     names::require_listed(blur_mode_names, v.blur, "blur");
     names::require_listed(bilateral_depth_names, v.blur_depth, "bilateral depth");
     names::require_listed(normal_source_names, v.normals, "normals");
@@ -145,7 +155,8 @@ inline void validate(const variant& v)
         fail("workgroup", std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y) + " is over 1024 invocations",
              "valid: x * y <= 1024");
     if (v.point_cloud_fallback && v.tech != technique::ssao)
-        fail("point-cloud fallback", "is an SSAO feature (seed 004), not available with gtao", "valid: off with gtao");
+        fail("point-cloud fallback", std::string("is an SSAO feature (seed 004), not available with ") + names::name_of(technique_names, v.tech, "technique"),
+             "valid: off with gtao and vbao");
 }
 
 // ---------------------------------------------------------------------------------
@@ -217,9 +228,12 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
             choice("RANGE_CHECK", names::name_of(ssao_range_check_names, v.range_check, "range check"));
             choice("OUTPUT", names::name_of(ssao_output_names, v.output, "output"));
             if (v.point_cloud_fallback) d.push_back({"AO_POINT_CLOUD_FALLBACK", ""});
-        } else {
+        } else if (v.tech == technique::gtao) {
             count("AO_GTAO_SLICES", v.gtao_slices);
             count("AO_GTAO_STEPS", v.gtao_steps);
+        } else {
+            count("AO_VBAO_SLICES", v.gtao_slices);
+            count("AO_VBAO_STEPS", v.gtao_steps);
         }
     } else if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
         choice("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth"));
@@ -241,7 +255,7 @@ inline variant canonical(variant v)
         v.ssao_samples = d.ssao_samples, v.range_check = d.range_check, v.output = d.output;
         v.point_cloud_fallback = d.point_cloud_fallback;
     }
-    if (v.tech != technique::gtao) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
+    if (!has_slices(v.tech)) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
     if (v.blur != blur_mode::bilateral) v.blur_depth = d.blur_depth;
     if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y;
     if (!v.half_resolution) v.upsample = d.upsample;
@@ -334,7 +348,7 @@ inline variant variant_from_name(const std::string& name)
     const std::vector<std::string> t = detail::split(name, '-');
     if (t.size() < 8)
         fail(subject, "has " + std::to_string(t.size()) + " tokens, too few",
-             "valid: ssao-s<N>|gtao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
+             "valid: ssao-s<N>|gtao-<S>x<N>|vbao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
              "persp|ortho, cs|fs, then extras; aogen list");
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");

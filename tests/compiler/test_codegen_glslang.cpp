@@ -269,6 +269,30 @@ TEST_CASE("codegen+glslang: GTAO, every choice axis crossed", "[codegen][glslang
     check_all(expand(m), 3 * 3 * 2 * 2 * 2 * 3);
 }
 
+TEST_CASE("codegen+glslang: VBAO, every choice axis crossed, fp16 too, and its edge counts", "[codegen][glslang]")
+{
+    variant_matrix m;
+    m.techniques = {technique::vbao};
+    m.normals = {normal_source::gbuffer_world, normal_source::gbuffer_view, normal_source::reconstructed};
+    m.depth = {depth_convention::standard, depth_convention::reversed, depth_convention::reversed_infinite};
+    m.projection = {projection_kind::perspective, projection_kind::orthographic};
+    m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
+    m.half_resolution = {false, true};
+    m.fp16 = {false, true};
+    m.blur = {blur_mode::bilateral, blur_mode::none};
+    check_all(expand(m), 3 * 3 * 2 * 2 * 2 * 2 * 2);
+    std::vector<variant> edges;
+    for (auto [slices, steps] : {std::pair{1, 1}, {1, 16}, {16, 1}, {16, 16}, {9, 3}}) {
+        variant v;
+        v.tech = technique::vbao;
+        v.gtao_slices = slices;
+        v.gtao_steps = steps;
+        v.blur = blur_mode::none;
+        edges.push_back(v);
+    }
+    check_all(edges, 5);
+}
+
 TEST_CASE("codegen+glslang: edge counts and workgroup sizes", "[codegen][glslang]")
 {
     std::vector<variant> vs;
@@ -356,7 +380,7 @@ TEST_CASE("codegen+glslang: without the point-cloud fallback none of its code is
 
 TEST_CASE("codegen+glslang: reconstructed normals declare no binding 2, G-buffer normals do", "[codegen][glslang]")
 {
-    for (technique tech : {technique::ssao, technique::gtao})
+    for (technique tech : {technique::ssao, technique::gtao, technique::vbao})
         for (pipeline_stage stage : {pipeline_stage::compute, pipeline_stage::fragment})
             for (normal_source normals :
                  {normal_source::gbuffer_world, normal_source::gbuffer_view, normal_source::reconstructed}) {
@@ -385,11 +409,13 @@ TEST_CASE("codegen+glslang: an error in a template names the template file and l
     };
     variant gtao;
     gtao.tech = technique::gtao;
+    variant vbao;
+    vbao.tech = technique::vbao;
     variant box;
     box.blur = blur_mode::box;
     box.stage = pipeline_stage::fragment;
     for (const broken_case& b : {broken_case{"ssao.glsl", variant{}}, broken_case{"common/depth.glsl", variant{}},
-                                 broken_case{"gtao.glsl", gtao}, broken_case{"blur_box.glsl", box},
+                                 broken_case{"gtao.glsl", gtao}, broken_case{"vbao.glsl", vbao}, broken_case{"blur_box.glsl", box},
                                  broken_case{"entry_fragment.glsl", box}}) {
         const fs::path dir = write_templates("broken");
         const std::string original = codegen::embedded_template(b.file);

@@ -20,8 +20,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <spirv_cross/GLSL.std.450.h>
-#include <spirv_cross/spirv.hpp>
+#include "spirv_eval.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,175 +40,13 @@ constexpr double half_pi = pi / 2;
 
 std::string lit(double x) { return codegen::detail::glsl_float(static_cast<float>(x)); }
 
-// ---- evaluating GLSL expressions through glslang + spirv-opt -----------------------------
-
-// Runs main() of an optimized module on the CPU, as far as spirv-opt left anything to
-// run: straight-line float arithmetic and GLSL.std.450 calls on constants (its folder
-// leaves, for instance, the Fma instructions it makes of a multiply and an add). Returns
-// the floats main() stores into ao_test.r[i], by i. Branches, loops, memory other than
-// the stores, and instructions not listed below fail the test, naming the opcode.
-// Arithmetic is in float, as on a GPU.
-std::vector<float> run_main(const std::vector<uint32_t>& words, size_t count)
-{
-    std::map<uint32_t, std::vector<float>> values; // id -> components (bools as 0 / 1)
-    std::map<uint32_t, uint32_t> chain_index;      // access chain -> its last index's id
-    std::map<uint32_t, bool> float_type;           // scalar and vector types: float or not
-    uint32_t main_function = 0;
-    bool in_main = false, seen_label = false;
-    std::vector<std::optional<float>> out(count);
-    auto value = [&](uint32_t id) -> const std::vector<float>& {
-        auto v = values.find(id);
-        if (v == values.end()) FAIL("SPIR-V id " << id << " has no value (not a constant, nor computed before use)");
-        return v->second;
-    };
-    auto scalar = [&](uint32_t id) {
-        const std::vector<float>& v = value(id);
-        REQUIRE(v.size() == 1);
-        return v[0];
-    };
-    auto map = [&](uint32_t a, auto f) {
-        std::vector<float> r = value(a);
-        for (float& x : r) x = f(x);
-        return r;
-    };
-    auto map2 = [&](uint32_t a, uint32_t b, auto f) {
-        std::vector<float> r = value(a);
-        const std::vector<float>& y = value(b);
-        REQUIRE(y.size() == r.size());
-        for (size_t i = 0; i < r.size(); ++i) r[i] = f(r[i], y[i]);
-        return r;
-    };
-    for (size_t i = 5; i < words.size();) {
-        const uint32_t length = words[i] >> 16;
-        const auto op = static_cast<spv::Op>(words[i] & 0xffffu);
-        REQUIRE(length > 0);
-        REQUIRE(i + length <= words.size());
-        const uint32_t* w = &words[i];
-        i += length;
-        switch (op) {
-        case spv::OpEntryPoint: main_function = w[2]; continue;
-        case spv::OpTypeFloat: float_type[w[1]] = true; continue;
-        case spv::OpTypeInt:
-        case spv::OpTypeBool: float_type[w[1]] = false; continue;
-        case spv::OpTypeVector: float_type[w[1]] = float_type[w[2]]; continue;
-        case spv::OpConstant: {
-            float f;
-            if (float_type[w[1]]) std::memcpy(&f, &w[3], sizeof f);
-            else f = static_cast<float>(w[3]);
-            values[w[2]] = {f};
-            continue;
-        }
-        case spv::OpConstantTrue: values[w[2]] = {1.0f}; continue;
-        case spv::OpConstantFalse: values[w[2]] = {0.0f}; continue;
-        case spv::OpConstantComposite:
-            if (!in_main) {
-                std::vector<float> v;
-                bool ok = true;
-                for (uint32_t k = 3; k < length; ++k) {
-                    auto c = values.find(w[k]);
-                    if (c == values.end()) ok = false;
-                    else v.insert(v.end(), c->second.begin(), c->second.end());
-                }
-                if (ok) values[w[2]] = v;
-            }
-            continue;
-        case spv::OpFunction: in_main = w[2] == main_function; continue;
-        case spv::OpFunctionEnd: in_main = false; continue;
-        default: break;
-        }
-        if (!in_main) continue;
-        switch (op) {
-        case spv::OpLabel:
-            if (seen_label) FAIL("main() has more than one block: branches were not folded away");
-            seen_label = true;
-            break;
-        case spv::OpReturn: break;
-        case spv::OpAccessChain:
-        case spv::OpInBoundsAccessChain: chain_index[w[2]] = w[length - 1]; break;
-        case spv::OpStore: {
-            auto chain = chain_index.find(w[1]);
-            REQUIRE(chain != chain_index.end());
-            const size_t slot = static_cast<size_t>(scalar(chain->second));
-            REQUIRE(slot < count);
-            out[slot] = scalar(w[2]);
-            break;
-        }
-        case spv::OpCompositeExtract: values[w[2]] = {value(w[3]).at(w[4])}; break;
-        case spv::OpCompositeConstruct: {
-            std::vector<float> v;
-            for (uint32_t k = 3; k < length; ++k) v.insert(v.end(), value(w[k]).begin(), value(w[k]).end());
-            values[w[2]] = v;
-            break;
-        }
-        case spv::OpFNegate: values[w[2]] = map(w[3], [](float x) { return -x; }); break;
-        case spv::OpFAdd: values[w[2]] = map2(w[3], w[4], [](float x, float y) { return x + y; }); break;
-        case spv::OpFSub: values[w[2]] = map2(w[3], w[4], [](float x, float y) { return x - y; }); break;
-        case spv::OpFMul: values[w[2]] = map2(w[3], w[4], [](float x, float y) { return x * y; }); break;
-        case spv::OpFDiv: values[w[2]] = map2(w[3], w[4], [](float x, float y) { return x / y; }); break;
-        case spv::OpSelect: values[w[2]] = scalar(w[3]) != 0.0f ? value(w[4]) : value(w[5]); break;
-        case spv::OpExtInst: {
-            const uint32_t a = w[5];
-            switch (static_cast<GLSLstd450>(w[4])) {
-            case GLSLstd450Sin: values[w[2]] = map(a, [](float x) { return std::sin(x); }); break;
-            case GLSLstd450Cos: values[w[2]] = map(a, [](float x) { return std::cos(x); }); break;
-            case GLSLstd450Acos: values[w[2]] = map(a, [](float x) { return std::acos(x); }); break;
-            case GLSLstd450Sqrt: values[w[2]] = map(a, [](float x) { return std::sqrt(x); }); break;
-            case GLSLstd450Atan2: values[w[2]] = map2(a, w[6], [](float y, float x) { return std::atan2(y, x); }); break;
-            case GLSLstd450FMin: values[w[2]] = map2(a, w[6], [](float x, float y) { return std::min(x, y); }); break;
-            case GLSLstd450FMax: values[w[2]] = map2(a, w[6], [](float x, float y) { return std::max(x, y); }); break;
-            case GLSLstd450FClamp: {
-                const std::vector<float> lo = value(w[6]), hi = value(w[7]);
-                std::vector<float> r = value(a);
-                REQUIRE(lo.size() == r.size());
-                REQUIRE(hi.size() == r.size());
-                for (size_t k = 0; k < r.size(); ++k) r[k] = std::min(std::max(r[k], lo[k]), hi[k]);
-                values[w[2]] = r;
-                break;
-            }
-            case GLSLstd450Fma: {
-                const std::vector<float> y = value(w[6]), z = value(w[7]);
-                std::vector<float> r = value(a);
-                REQUIRE(y.size() == r.size());
-                REQUIRE(z.size() == r.size());
-                for (size_t k = 0; k < r.size(); ++k) r[k] = std::fma(r[k], y[k], z[k]);
-                values[w[2]] = r;
-                break;
-            }
-            default: FAIL("main() calls GLSL.std.450 instruction " << w[4] << ", which this test does not evaluate");
-            }
-            break;
-        }
-        default: FAIL("main() has opcode " << int(op) << ", which this test does not evaluate");
-        }
-    }
-    std::vector<float> r;
-    for (size_t k = 0; k < count; ++k) {
-        INFO("ao_test.r[" << k << "]");
-        REQUIRE(out[k].has_value());
-        r.push_back(*out[k]);
-    }
-    return r;
-}
-
 // Each GLSL float expression evaluated with gtao.glsl (and the files before it) in scope.
 std::vector<float> evaluate(const std::vector<std::string>& expressions)
 {
-    std::string entry = "layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;\n"
-                        "layout(std430, set = 1, binding = 0) writeonly buffer AoTest { float r[]; } ao_test;\n"
-                        "void main()\n{\n";
-    for (size_t i = 0; i < expressions.size(); ++i)
-        entry += "    ao_test.r[" + std::to_string(i) + "] = " + expressions[i] + ";\n";
-    entry += "}\n";
-    const codegen::template_reader read = [&entry](const std::string& path) {
-        return path == "entry_compute.glsl" ? entry : codegen::embedded_template(path);
-    };
     variant v;
     v.tech = technique::gtao;
-    const codegen::shader_source s = codegen::generate_shader(v, pass_kind::ao, shader_stage::compute, read);
-    REQUIRE(s.glsl.find("ao_half ao_gtao_slice_integral(") != std::string::npos); // ao_half: float here (no fp16)
-    const std::vector<uint32_t> words =
-        compile::optimize_spirv(compile::glsl_to_spirv(s.glsl, shader_stage::compute, "gtao slice test"), "gtao slice test");
-    return run_main(words, expressions.size());
+    REQUIRE(codegen::generate(v)[0].glsl.find("ao_half ao_gtao_slice_integral(") != std::string::npos); // ao_half: float here (no fp16)
+    return aogen_test::evaluate_in_ao_pass(v, expressions, "gtao slice test");
 }
 
 // ---- independent references ---------------------------------------------------------------

@@ -27,7 +27,7 @@ namespace {
 std::vector<variant> broad_set()
 {
     variant_matrix m;
-    m.techniques = {technique::ssao, technique::gtao};
+    m.techniques = {technique::ssao, technique::gtao, technique::vbao};
     m.ssao_samples = {1, 16};
     m.gtao_slices = {1, 3};
     m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
@@ -187,6 +187,11 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
     v.tech = technique::gtao;
     s = codegen::generate(v);
     CHECK(s[0].glsl.find(decl(uniforms::gtao_block())) != std::string::npos);
+    v.tech = technique::vbao;
+    s = codegen::generate(v);
+    CHECK(s[0].glsl.find("#line 1 \"aogen:VbaoUniforms\"\n" + decl(uniforms::vbao_block())) != std::string::npos);
+    CHECK(s[0].glsl.find("#line 1 \"vbao.glsl\"") != std::string::npos);
+    CHECK(s[0].glsl.find("#line 1 \"gtao.glsl\"") == std::string::npos);
     v = variant{};
     v.point_cloud_fallback = true; // seed 004's variant still reads SsaoUniforms
     CHECK(codegen::uniform_block(v, pass_kind::ao).root.name == "SsaoUniforms");
@@ -195,6 +200,7 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
         INFO(t.path);
         CHECK(t.text.find("uniform Ssao") == std::string::npos);
         CHECK(t.text.find("uniform Gtao") == std::string::npos);
+        CHECK(t.text.find("uniform Vbao") == std::string::npos);
         CHECK(t.text.find("uniform Blur") == std::string::npos);
         CHECK(t.text.find("layout(std140") == std::string::npos);
     }

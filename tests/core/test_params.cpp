@@ -364,6 +364,28 @@ TEST_CASE("params: every gtao field rejects bad values and accepts its bounds", 
                Contains("gtao.normals: -1 is not a valid value") && Contains("reconstructed"));
 }
 
+TEST_CASE("params: every vbao field rejects bad values and accepts its bounds", "[params]")
+{
+    using P = aogen::vbao_params;
+    check_float_fields<P>({
+        {"vbao.radius", P::radius_range, [](P& p, float v) { p.radius = v; }},
+        {"vbao.thickness", P::thickness_range, [](P& p, float v) { p.thickness = v; }},
+        {"vbao.strength", P::strength_range, [](P& p, float v) { p.strength = v; }},
+    });
+    check_int_fields<P>({
+        {"vbao.slices", P::slices_range, [](P& p, int v) { p.slices = v; }},
+        {"vbao.steps", P::steps_range, [](P& p, int v) { p.steps = v; }},
+    });
+    CHECK(aogen::to_string(P::thickness_range) == "> 0 and <= 100");
+    P p;
+    CHECK_NOTHROW(aogen::validate(p));
+    p.thickness = 0; // nothing would occlude
+    CHECK_THAT(error_of([&] { aogen::validate(p); }), Contains("vbao.thickness: 0 is out of range (valid: > 0 and <= 100)"));
+    p = {};
+    p.normals = static_cast<aogen::normal_source>(7);
+    CHECK_THAT(error_of([&] { aogen::validate(p, "settings.vbao"); }), Contains("settings.vbao.normals: 7 is not a valid value"));
+}
+
 TEST_CASE("params: every blur field rejects bad values and accepts its bounds", "[params]")
 {
     using P = aogen::blur_params;

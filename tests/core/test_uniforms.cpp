@@ -133,6 +133,25 @@ TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[unifor
     CHECK(float_at(tuned, 224) == 1.5f);
 }
 
+TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, strength", "[uniforms]")
+{
+    const layout::struct_layout l = layout::compute(uniforms::vbao_block(), rules::std140);
+    CHECK(l.size == 224);
+    CHECK(l.name == "VbaoUniforms");
+    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 220);
+    vbao_params p;
+    p.radius = 2.0f, p.thickness = 0.25f, p.strength = 1.5f;
+    const std::vector<uint8_t> bytes = uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
+    REQUIRE(bytes.size() == 224);
+    CHECK(float_at(bytes, 192) == 240.0f); // noise_scale: a 4×4 tile
+    CHECK(float_at(bytes, 208) == 2.0f);   // radius
+    CHECK(float_at(bytes, 212) == 0.5f);   // thickness: 0.25 of the radius, in world units
+    CHECK(float_at(bytes, 216) == 1.5f);   // strength
+    for (size_t pad = 220; pad < 224; ++pad) CHECK(bytes[pad] == 0);
+    p.thickness = -1;
+    CHECK_THROWS_WITH(uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140), Catch::Contains("vbao.thickness"));
+}
+
 TEST_CASE("Packing rejects a kernel of the wrong size and invalid params", "[uniforms]")
 {
     const ssao_preset preset = presets::taos_ssao();

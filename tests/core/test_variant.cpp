@@ -23,7 +23,7 @@ namespace {
 std::vector<variant> broad_set()
 {
     variant_matrix m;
-    m.techniques = {technique::ssao, technique::gtao};
+    m.techniques = {technique::ssao, technique::gtao, technique::vbao};
     m.ssao_samples = {1, 256};
     m.gtao_slices = {1, 16};
     m.gtao_steps = {16};
@@ -51,6 +51,39 @@ TEST_CASE("variant: the default's name is the one DESIGN.md spells", "[variant]"
     v.stage = pipeline_stage::fragment;
     v.blur = blur_mode::box;
     CHECK(to_name(v) == "gtao-2x3-half-box-gbufworld-std-persp-fs");
+    v.tech = technique::vbao;
+    CHECK(to_name(v) == "vbao-2x3-half-box-gbufworld-std-persp-fs");
+}
+
+TEST_CASE("variant: vbao shares gtao's slice x step token, keeps its counts, and gtao's names are unchanged", "[variant]")
+{
+    const variant v = variant_from_name("vbao-9x3-full-bilateral-gbufview-rev-ortho-cs-fp16");
+    CHECK(v.tech == technique::vbao);
+    CHECK(v.gtao_slices == 9);
+    CHECK(v.gtao_steps == 3);
+    CHECK(!v.half_resolution);
+    CHECK(to_name(variant_from_name(to_name(v))) == "vbao-9x3-full-bilateral-gbufview-rev-ortho-cs-fp16");
+    // Same axes, other technique: another variant, another name, another hash.
+    variant g = v;
+    g.tech = technique::gtao;
+    CHECK(g != v);
+    CHECK(hash(g) != hash(v));
+    CHECK(to_name(g) == "gtao-9x3-full-bilateral-gbufview-rev-ortho-cs-fp16");
+    // Its defines: VBAO's counts and technique, no GTAO or SSAO define.
+    std::set<std::string> names;
+    for (const define& d : defines(v, pass_kind::ao)) names.insert(d.name + "=" + d.value);
+    CHECK(names.count("AO_TECHNIQUE_VBAO="));
+    CHECK(names.count("AO_VBAO_SLICES=9"));
+    CHECK(names.count("AO_VBAO_STEPS=3"));
+    for (const std::string& n : names) CHECK((n.rfind("AO_GTAO", 0) != 0 && n.rfind("AO_SSAO", 0) != 0));
+    // SSAO's axes are irrelevant to it, as to GTAO.
+    variant a = v;
+    a.ssao_samples = 64, a.range_check = ssao_range_check::seed004;
+    CHECK(a == v);
+    CHECK_THAT(error_of([] { variant_from_name("vbao-17x3-half-bilateral-gbufworld-std-persp-cs"); }), Contains("gtao slices: 17 is out of range"));
+    CHECK_THAT(error_of([] { variant_from_name("vbao-2x3-half-bilateral-gbufworld-std-persp-cs-pc"); }),
+               Contains("not available with vbao"));
+    CHECK_THAT(error_of([] { variant_from_name("vbao-s16-half-bilateral-gbufworld-std-persp-cs"); }), Contains("is not slices x steps"));
 }
 
 TEST_CASE("variant: every name parses back into the same variant, and names are unique", "[variant]")
@@ -93,7 +126,7 @@ TEST_CASE("variant: invalid names name the token and the valid values", "[varian
     CHECK_THAT(error_of([] { variant_from_name("ssao-s0-half-bilateral-gbufworld-std-persp-cs"); }),
                Contains("ssao samples: 0 is out of range (valid: 1..256)"));
     CHECK_THAT(error_of([] { variant_from_name("hbao-s16-half-bilateral-gbufworld-std-persp-cs"); }),
-               Contains("'hbao' is not a known name (valid: ssao, gtao)"));
+               Contains("'hbao' is not a known name (valid: ssao, gtao, vbao)"));
     CHECK_THAT(error_of([] { variant_from_name("gtao-2x17-half-bilateral-gbufworld-std-persp-cs"); }),
                Contains("gtao steps: 17 is out of range (valid: 1..16)"));
     CHECK_THAT(error_of([] { variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-fast"); }),
@@ -186,25 +219,35 @@ TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and
 TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
 {
     const std::vector<variant> m = default_matrix();
-    CHECK(m.size() == 32 + 60 + 4);
-    int ssao_cs = 0, gtao_cs = 0, fs = 0;
+    CHECK(m.size() == 32 + 60 + 4 + 5);
+    int ssao_cs = 0, gtao_cs = 0, vbao_cs = 0, fs = 0;
     for (const variant& v : m) {
         if (v.stage == pipeline_stage::fragment) ++fs;
         else if (v.tech == technique::ssao) ++ssao_cs;
-        else ++gtao_cs;
+        else if (v.tech == technique::gtao) ++gtao_cs;
+        else ++vbao_cs;
     }
     CHECK(ssao_cs == 32); // 4 sample counts x 4 blurs x full/half
     CHECK(gtao_cs == 60); // 5 slice counts x 3 step counts x 4 blurs
+    CHECK(vbao_cs == 5);
     CHECK(fs == 4);
+    // VBAO last, so that the others keep their order: the quality presets, then High at full resolution.
+    std::vector<std::string> vbao;
+    for (size_t i = 96; i < m.size(); ++i) vbao.push_back(to_name(m[i]));
+    CHECK(vbao == std::vector<std::string>{"vbao-1x2-half-bilateral-gbufworld-std-persp-cs", "vbao-2x2-half-bilateral-gbufworld-std-persp-cs",
+                                           "vbao-3x3-half-bilateral-gbufworld-std-persp-cs", "vbao-9x3-half-bilateral-gbufworld-std-persp-cs",
+                                           "vbao-3x3-full-bilateral-gbufworld-std-persp-cs"});
     CHECK(to_name(m.front()) == "ssao-s8-full-bilateral-gbufworld-std-persp-cs");
 }
 
-TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO only, and named back", "[variant][quality]")
+TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO and VBAO only, and named back", "[variant][quality]")
 {
     variant v;
     v.tech = technique::gtao;
     const std::array<std::pair<const char*, std::pair<int, int>>, 4> expected{{{"low", {1, 2}}, {"medium", {2, 2}}, {"high", {3, 3}}, {"ultra", {9, 3}}}};
+    for (technique t : {technique::gtao, technique::vbao})
     for (const auto& [name, counts] : expected) {
+        v.tech = t;
         INFO(name);
         apply_quality(v, quality_preset_from_name(name));
         CHECK(v.gtao_slices == counts.first);
@@ -217,5 +260,5 @@ TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO only, and name
     CHECK(quality_name_of(variant{}).empty());
     CHECK_THAT(error_of([] { quality_preset_from_name("epic"); }), Contains("'epic' is not a quality preset (valid: low, medium, high, ultra)"));
     variant ssao;
-    CHECK_THAT(error_of([&] { apply_quality(ssao, quality_preset_from_name("high")); }), Contains("the variant is not GTAO"));
+    CHECK_THAT(error_of([&] { apply_quality(ssao, quality_preset_from_name("high")); }), Contains("sets slices and steps, and the variant is ssao (valid: technique gtao or vbao)"));
 }

@@ -63,6 +63,7 @@ namespace aogen::vulkan {
 struct chain_settings {
     ssao_params ssao;   // ssao.samples is taken from the variant
     gtao_params gtao;
+    vbao_params vbao;
     blur_params blur;
     uniforms::camera camera;
 };
@@ -91,19 +92,20 @@ inline std::pair<int, int> output_size(const variant& v, int w, int h)
 
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
 // target_w × target_h: each pass's std140 uniform block, the noise tile the params name
-// (4×4 for GTAO) and, for SSAO, the kernel inside its block.
+// (4×4 for GTAO and VBAO) and, for SSAO, the kernel inside its block.
 inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
 {
     constexpr layout::rules rules = layout::rules::std140;
     ssao_params ssao = s.ssao;
     ssao.samples = v.ssao_samples;
     chain_inputs in;
-    in.noise_size = v.tech == technique::gtao ? 4 : ssao.noise_size;
+    in.noise_size = has_slices(v.tech) ? 4 : ssao.noise_size;
     in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
     const vec2 tsize{float(target_w), float(target_h)};
     for (pass_kind pass : passes(v)) {
         if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules));
         else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size));
+        else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size));
         else {
             const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), ssao.samples, ssao.kernel_seed);
             in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules));

@@ -94,13 +94,13 @@ inline std::vector<bool> bool_list(const json_reader& in, const char* key, const
 inline void require_axes_used(const json_reader& in, const std::vector<technique>& techniques)
 {
     const bool ssao = std::find(techniques.begin(), techniques.end(), technique::ssao) != techniques.end();
-    const bool gtao = std::find(techniques.begin(), techniques.end(), technique::gtao) != techniques.end();
+    const bool slices = std::any_of(techniques.begin(), techniques.end(), has_slices);
     for (const char* key : {"samples", "point_cloud", "range_check", "output"})
         if (in.has(key) && !ssao)
             fail(key_path(in.path(), key), "is an SSAO axis, and this matrix makes no SSAO variant", "valid: leave it out, or add \"ssao\" to technique");
     for (const char* key : {"slices", "steps"})
-        if (in.has(key) && !gtao)
-            fail(key_path(in.path(), key), "is a GTAO axis, and this matrix makes no GTAO variant", "valid: leave it out, or add \"gtao\" to technique");
+        if (in.has(key) && !slices)
+            fail(key_path(in.path(), key), "is a GTAO and VBAO axis, and this matrix makes neither", "valid: leave it out, or add \"gtao\" or \"vbao\" to technique");
 }
 
 inline variant_matrix matrix_from_json(const json_reader& in)

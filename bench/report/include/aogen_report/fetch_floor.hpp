@@ -42,16 +42,24 @@ inline aogen::variant floor_variant(aogen::variant v)
     return v;
 }
 
-// The fetch-only file that stands in for aogen template `path`, or "" when it is kept.
-inline std::string floor_replacement(const std::string& path)
+// The text of floor/`name`, standing in for aogen template `path`.
+inline std::string floor_replacement_file(const std::string& name, const std::string& path)
 {
-    const std::array<const char*, 7> replaced{"common/normals.glsl", "ssao.glsl",          "gtao.glsl",    "blur_bilateral.glsl",
-                                              "blur_box.glsl",       "blur_denoise.glsl", "upsample.glsl"};
-    if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
-    const std::string name = path.substr(path.rfind('/') + 1); // floor/ is flat: common/normals.glsl is normals.glsl
     for (const auto& t : floor_embedded::templates)
         if (t.path == name) return std::string(t.text);
     aogen::fail("fetch floor", "no floor template " + name + " for " + path, "valid: bench/report/floor/ holds one per replaced template");
+}
+
+// The fetch-only file that stands in for aogen template `path`, or "" when it is kept.
+inline std::string floor_replacement(const std::string& path)
+{
+    const std::array<const char*, 8> replaced{"common/normals.glsl", "ssao.glsl",     "gtao.glsl",         "vbao.glsl",
+                                              "blur_bilateral.glsl", "blur_box.glsl", "blur_denoise.glsl", "upsample.glsl"};
+    if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
+    // VBAO fetches what GTAO fetches (the same slices and steps): floor/vbao.glsl renames the
+    // counts, then floor/gtao.glsl's loop follows.
+    if (path == "vbao.glsl") return floor_replacement_file("vbao.glsl", path) + floor_replacement_file("gtao.glsl", path);
+    return floor_replacement_file(path.substr(path.rfind('/') + 1), path); // floor/ is flat: common/normals.glsl is normals.glsl
 }
 
 // The floor's compute shaders, one per pass of `v`, named "<variant>.floor.<pass>.comp".

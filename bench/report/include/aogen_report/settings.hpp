@@ -8,6 +8,8 @@
 //
 // Defaults are what a user gets (aogen/params.hpp): GTAO's tuned defaults, its radius
 // gtao_params::radius_per_ao_radius × the scene's AO radius R (the ground truth's radius);
+// VBAO's defaults likewise, radius vbao_params::radius_per_ao_radius × R (its thickness is a
+// fraction of the radius, so it scales with R by itself);
 // for SSAO the seed presets (not tuned yet), Taos' for the strength output form and Unique
 // Engine's for power/intensity, the hemisphere R — with every length scaled to the scene:
 // SSAO's bias keeps the presets' ratio to the
@@ -57,6 +59,7 @@ inline radius_range ao_radius_range()
     double hi = std::min(double(aogen::ssao_params::radius_range.hi),
                          aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
     hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / bias_ratio);
+    hi = std::min(hi, aogen::vbao_params::radius_range.hi / double(aogen::vbao_params::radius_per_ao_radius));
     return {sharpness / double(aogen::blur_params::linear_sharpness_range.hi), hi};
 }
 
@@ -80,6 +83,8 @@ inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, c
     c.ssao.radius = R;
     c.gtao = aogen::gtao_params{}; // the tuned defaults (params.hpp)
     c.gtao.radius = aogen::gtao_params::radius_per_ao_radius * R;
+    c.vbao = aogen::vbao_params{};
+    c.vbao.radius = aogen::vbao_params::radius_per_ao_radius * R;
     c.blur = v.blur_depth == aogen::bilateral_depth::seed_raw ? aogen::presets::taos_quality_blur() : aogen::blur_params{};
     c.blur.linear_sharpness = c.blur.linear_sharpness / R;
     const aogen::scenes::scene seen = for_variant(s, v);

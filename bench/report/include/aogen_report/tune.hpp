@@ -49,6 +49,7 @@ struct tune_axis {
 //          power: visibility^strength), thickness_bias (the cut-off radius·(1 + 10·t)),
 //          falloff_range (the share of the cut-off distance a sample fades over),
 //          thin_occluder (how much longer depth offsets count);
+//   vbao   radius_scale, strength, thickness (each sample's depth, a fraction of the radius);
 //   ssao   radius_scale, strength (1 − occlusion·strength); the bias keeps its ratio to
 //          the radius, as the presets have it.
 inline std::vector<tune_axis> tune_axes(const aogen::variant& v)
@@ -66,8 +67,16 @@ inline std::vector<tune_axis> tune_axes(const aogen::variant& v)
             {{"thin_occluder", 0.0, 4.0}, [] { return double(aogen::gtao_params{}.thin_occluder); },
              [](settings& c, float, double x) { c.gtao.thin_occluder = float(x); }},
         };
+    if (v.tech == aogen::technique::vbao)
+        return {
+            {{"radius_scale", 0.5, 2.0}, [] { return double(aogen::vbao_params::radius_per_ao_radius); },
+             [](settings& c, float R, double x) { c.vbao.radius = float(x) * R; }},
+            {{"strength", 0.25, 3.0}, [] { return double(aogen::vbao_params{}.strength); }, [](settings& c, float, double x) { c.vbao.strength = float(x); }},
+            {{"thickness", 0.05, 2.0}, [] { return double(aogen::vbao_params{}.thickness); },
+             [](settings& c, float, double x) { c.vbao.thickness = float(x); }},
+        };
     if (v.output == aogen::ssao_output::power_intensity)
-        aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, or SSAO with the strength output");
+        aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, VBAO, or SSAO with the strength output");
     return {
         {{"radius_scale", 0.5, 4.0}, [] { return 1.0; },
          [](settings& c, float R, double x) {

@@ -1,0 +1,250 @@
+// vbao.glsl -- visibility-bitmask AO (Therrien, Levesque and Gilet 2023, "Screen Space
+// Indirect Lighting with Visibility Bitmask"), on gtao.glsl's slices, with sectors weighted
+// so that the result is aogen's cosine-weighted AO. Uniform block: VbaoUniforms (u.proj,
+// u.inv_proj, u.world_to_view, u.radius, u.thickness in world units, u.strength).
+//
+// Per pixel, with P its view-space position, V the direction to the camera and n the
+// normal (normals.glsl; it faces V), for each of AO_VBAO_SLICES slices -- screen
+// directions at angles s * pi / SLICES, all rotated by the pixel's noise rotation, as GTAO's:
+//   1. project n onto the slice plane (spanned by V and the slice direction `side`):
+//      length |n_p| and signed angle n from V, positive toward `side`
+//      (ao_vbao_projected_normal). The directions of the slice that lie in the hemisphere
+//      around the normal are the angles theta in [n - pi/2, n + pi/2], theta measured from
+//      V, positive toward `side`;
+//   2. march AO_VBAO_STEPS steps to each side at gtao.glsl's screen positions (step j at
+//      j / STEPS of the radius projected at P's depth, capped at half the screen's height).
+//      A sample's surface point S (its front) and S pushed u.thickness away from the camera
+//      along its view ray (its back) are seen from P at two angles; the object is taken to
+//      fill the wedge between them, so the sectors of that wedge are marked occluded in the
+//      slice's 32-bit mask (ao_vbao_sectors). Samples off screen (or within half a texel of
+//      its edge), on background, on the pixel itself, whose front lies farther than the
+//      radius from P, or at or below P's tangent plane mark nothing;
+//   3. the slice's visibility is the unmarked share of its sectors, 1 - popcount / 32,
+//      times its unoccluded integral cos n + n sin n (gtao.glsl's), weighted by |n_p|.
+// The visibility is sum |n_p| (1 - popcount / 32) (cos n + n sin n) / sum |n_p| (cos n + n sin n)
+// over the slices, raised to u.strength.
+//
+// WHY A BITMASK
+//   A horizon says "everything below me is occluded": GTAO treats every object as infinitely
+//   deep, so under a plank, beside a thin pole or behind a railing the floor is shadowed as
+//   if a wall stood there. A sample here occludes only the wedge its own thickness covers,
+//   and several samples on one side add their wedges together (a bitwise or), which a
+//   single horizon cannot: a gap between two occluders stays visible. One constant thickness
+//   for every object is the method's model (the depth buffer holds front faces only); with
+//   a thickness far larger than the radius every wedge reaches down to the hemisphere's
+//   edge and the mask is GTAO's horizon, quantised to 32 sectors.
+//
+// COSINE-WEIGHTED SECTORS
+//   aogen's AO is the cosine-weighted visibility (DESIGN.md); in slice coordinates
+//   (gtao.glsl's derivation) AO = 1/pi * integral over phi of |n_p| * integral of V(theta)
+//   cos(theta - n) |sin theta| dtheta. So the measure of an angle interval within a slice is
+//   m(theta) dtheta = cos(theta - n) |sin theta| dtheta, not dtheta: directions near V cover
+//   little solid angle, directions near the view plane much. Sectors of equal angle would
+//   count an occluder near V as much as one near the view plane (the error gtao.glsl's
+//   "Why not the seed's formula" describes). Instead the 32 sectors are of equal *measure*:
+//   an angle theta is mapped to the normalised cumulative measure
+//       c(theta) = integral_{n - pi/2}^{theta} m / integral_{n - pi/2}^{n + pi/2} m   in [0, 1]
+//   and sector k covers c in [k / 32, (k + 1) / 32). Then popcount / 32 is the occluded
+//   share of the slice's measure (to the quantisation below), and the slice's visible
+//   measure is (1 - popcount / 32) times the whole, cos n + n sin n -- exactly gtao.glsl's
+//   a(h-, n) + a(h+, n) when the mask is a heightfield's (a large thickness), so the two
+//   converge to the same integral.
+//   The cumulative: F(t) = (-cos(2t - n) + cos n + 2t sin n) / 4 (gtao.glsl's a(t, n)) has
+//   F' = cos(t - n) sin t and F(0) = 0, so integral_0^t m = F(t) for t >= 0 and
+//   integral_t^0 m = F(t) for t <= 0 (|sin t| = -sin t there; F(t) >= 0 either way). With
+//   lo = n - pi/2 <= 0 <= hi = n + pi/2:
+//       integral_lo^theta m = F(lo) + sign(theta) F(theta),
+//       integral_lo^hi m    = F(lo) + F(hi) = cos n + n sin n            (in [1, pi/2])
+//   (ao_vbao_cumulative).
+//
+// QUANTISATION
+//   A wedge [theta_a, theta_b] marks sectors round(32 c(theta_a)) up to round(32 c(theta_b))
+//   - 1: a boundary lands on the nearest sector boundary, so each moves the slice's visible
+//   share by at most 1/64, and without bias (floor/ceil would make every wedge grow or shrink
+//   by half a sector on average). A heightfield slice has one boundary per side whose far
+//   end is the hemisphere's edge (c = 1 or 0, exact), so its visibility is within 1/32 of the
+//   exact slice integral, and over many slices with jittered boundaries much closer. A
+//   wedge narrower than half a sector can mark nothing: thin objects at grazing angles
+//   flicker by a sector, which the blur averages.
+//
+// NUMERICS
+//   Cosines come from 32-bit view positions (float, as gtao.glsl's horizons); a NaN or a
+//   cosine outside [-1, 1] marks nothing. Angles are clamped to the hemisphere [lo, hi]
+//   before the cumulative, and the cumulative's result to [0, 1], so sector indices are in
+//   0..32 and every shift is by less than 32 (a shift by 32 is undefined in GLSL:
+//   ao_vbao_sectors_below adds the top bit instead). With AO_FP16 the angles, the cumulative and the slice
+//   weights are ao_half: a half's 4.9e-4 relative error moves a sector boundary by at most
+//   0.02 of a sector. The sums are float and finite; the result is in [0, 1]; ao_finalize
+//   (core.glsl) catches anything else.
+
+#if !defined(AO_PASS_AO) || !defined(AO_TECHNIQUE_VBAO)
+#error aogen: vbao.glsl is the AO pass of the vbao technique
+#endif
+#if !defined(AO_VBAO_SLICES) || !defined(AO_VBAO_STEPS)
+#error aogen: vbao.glsl needs AO_VBAO_SLICES and AO_VBAO_STEPS
+#endif
+
+const uint AO_VBAO_SECTORS = 32u;
+
+// The normal projected onto the slice plane, as (|n_p|, n): V and `side` are an orthonormal
+// basis of that plane, so n_p = dot(n, V) V + dot(n, side) side, and n = atan(dot(n, side),
+// dot(n, V)) in [-pi/2, pi/2] (dot(n, V) >= 0: the normal faces V). (0, 0) for a normal
+// (nearly) perpendicular to the plane, which the caller skips.
+ao_half2 ao_vbao_projected_normal(vec3 n, vec3 V, vec3 side)
+{
+    vec2 in_plane = vec2(dot(n, V), dot(n, side));
+    float n_length = sqrt(in_plane.x * in_plane.x + in_plane.y * in_plane.y);
+    if (!(n_length > 1e-6)) return ao_half2(0.0);
+    // In the view plane (dot(n, V) <= 0 by rounding) atan(y, 0) would be +-pi/2 anyway; it
+    // is written out because atan(0, 0) is undefined.
+    ao_half angle = in_plane.x > 0.0 ? atan(ao_half(in_plane.y), ao_half(in_plane.x))
+                                     : ao_half(in_plane.y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
+    return ao_half2(n_length, clamp(angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI)));
+}
+
+// The unoccluded slice's measure, integral over [n - pi/2, n + pi/2] of cos(t - n) |sin t|:
+// cos n + n sin n, in [1, pi/2].
+ao_half ao_vbao_slice_unoccluded(ao_half n)
+{
+    return cos(n) + n * sin(n);
+}
+
+// F(t) = integral_0^t cos(x - n) sin x dx (the header's derivation; >= 0 for t in [n - pi/2, n + pi/2]).
+ao_half ao_vbao_antiderivative(ao_half t, ao_half n)
+{
+    return ao_half(0.25) * (cos(n) - cos(ao_half(2.0) * t - n) + ao_half(2.0) * t * sin(n));
+}
+
+// c(theta): the share of the slice's cosine-weighted measure between n - pi/2 and theta,
+// in [0, 1]; theta is clamped to the hemisphere first.
+ao_half ao_vbao_cumulative(ao_half theta, ao_half n)
+{
+    const ao_half half_pi = ao_half(AO_HALF_PI);
+    ao_half t = clamp(theta, n - half_pi, n + half_pi);
+    ao_half below_zero = ao_vbao_antiderivative(n - half_pi, n); // integral_lo^0
+    ao_half up_to_t = below_zero + sign(t) * ao_vbao_antiderivative(t, n);
+    return clamp(up_to_t / ao_vbao_slice_unoccluded(n), ao_half(0.0), ao_half(1.0));
+}
+
+// The mask of sectors 0 .. k - 1, for k in 0..32. A shift by 32 is undefined, so k = 32 is
+// (1 << 31) - 1 with the top bit added; written without a branch.
+uint ao_vbao_sectors_below(uint k)
+{
+    return ((1u << min(k, 31u)) - 1u) | (uint(k >= AO_VBAO_SECTORS) << 31u);
+}
+
+// The sectors the wedge between angles theta_a and theta_b (either order) covers: from
+// round(32 c(lower)) to round(32 c(upper)) - 1.
+uint ao_vbao_sectors(ao_half theta_a, ao_half theta_b, ao_half n)
+{
+    const ao_half count = ao_half(AO_VBAO_SECTORS);
+    uint first = uint(floor(ao_vbao_cumulative(min(theta_a, theta_b), n) * count + ao_half(0.5)));
+    uint end = uint(floor(ao_vbao_cumulative(max(theta_a, theta_b), n) * count + ao_half(0.5)));
+    return ao_vbao_sectors_below(end) & ~ao_vbao_sectors_below(first);
+}
+
+// The unmarked share of a slice's sectors, 1 - popcount / 32.
+ao_half ao_vbao_slice_visible(uint occluded)
+{
+    return ao_half(1.0) - ao_half(bitCount(occluded)) / ao_half(AO_VBAO_SECTORS);
+}
+
+// The signed angle from V of the direction from P to view-space point X, on the side
+// `toward` (+1 ahead, -1 behind), or false when it cannot be known (X at P, not finite).
+bool ao_vbao_angle(vec3 X, vec3 P, vec3 V, float toward, out ao_half theta)
+{
+    vec3 w = X - P;
+    float distance = length(w);
+    theta = ao_half(0.0);
+    if (!(distance > 1e-30 && ao_is_finite(distance))) return false;
+    float c = dot(w, V) / distance;
+    if (!(c >= -1.0 && c <= 1.0)) c = clamp(c, -1.0, 1.0); // rounding past +-1; NaN was excluded above
+    theta = ao_half(toward) * ao_half(acos(c));
+    return true;
+}
+
+// The sectors one sample at screen position `pos` (full-resolution pixels) marks, on the
+// side `toward` of the slice whose projected normal has angle n: its front S and back S -
+// V_S thickness (V_S: toward the camera from S), or 0 when it marks nothing.
+uint ao_vbao_sample(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, vec3 normal, float toward, ao_half n, float radius)
+{
+    ivec2 size = ao_depth_size();
+    // On screen, and between the outermost texel centres: in the half texel beyond them
+    // ao_depth_at's clamped 2x2 quad repeats a row or column, reads as one plane, and gives
+    // the border texels' depth at a point half a texel away -- off the surface, above it as
+    // often as below, and above it a sector's worth on a steep plane (GTAO's horizon moves
+    // by little there; a sector is 1/32 of a slice).
+    if (!(pos.x >= 0.5 && pos.y >= 0.5 && pos.x <= float(size.x) - 0.5 && pos.y <= float(size.y) - 0.5)) return 0u;
+    float depth;
+    vec2 at;
+    ivec2 q;
+    if (!ao_depth_at(pos, depth, at, q) || q == centre_pixel) return 0u; // depth.glsl, as gtao.glsl
+    vec3 front = ao_view_position(at / vec2(size), depth);
+    vec3 w = front - P;
+    float distance = length(w);
+    if (!(distance <= radius)) return 0u; // beyond the AO radius; NaN and inf fail too
+    // A front at or below P's tangent plane marks nothing: its back lies farther below (the
+    // camera is above that plane, and the back is farther from the camera), so the whole
+    // wedge is outside the hemisphere. Its angle says so only for points on the slice's own
+    // plane; a silhouette texel's centre (ao_depth_at) lies up to half a texel off it, and
+    // its angle from V can then read up to a sector above the hemisphere's edge -- an open
+    // plane would lose a sector near every silhouette. 1e-3: an elevation of 0.06 degrees,
+    // above the rounding of points on the plane, below anything that occludes a sector.
+    if (!(dot(w, normal) > 1e-3 * distance)) return 0u;
+    vec3 back = front - ao_view_direction(front) * u.thickness;
+    ao_half theta_front, theta_back;
+    if (!ao_vbao_angle(front, P, V, toward, theta_front)) return 0u;
+    if (!ao_vbao_angle(back, P, V, toward, theta_back)) theta_back = ao_half(toward * AO_PI); // back at P: down to the edge
+    return ao_vbao_sectors(theta_front, theta_back, n);
+}
+
+float ao_pass(ivec2 target_pixel)
+{
+    ivec2 p = ao_full_pixel(target_pixel);
+    float depth = ao_load_depth(p);
+    if (ao_is_background(depth)) return 1.0;
+    vec3 P = ao_view_position(ao_pixel_uv(p), depth);
+    if (!ao_is_finite(P)) return 1.0;
+    vec3 V = ao_view_direction(P);
+    vec3 n;
+    if (!ao_surface_normal(p, P, V, n)) return 1.0;
+
+    // The radius in full-resolution pixels at P's depth and its cap at half the screen's
+    // height, as gtao.glsl: the world radius the cap leaves bounds the samples' distance.
+    vec2 fsize = vec2(ao_depth_size());
+    float pixels_per_unit = 0.5 * fsize.y * abs(u.proj[1][1]);
+#if !defined(AO_PROJECTION_ORTHOGRAPHIC)
+    pixels_per_unit /= max(-P.z, 1e-30);
+#endif
+    float radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
+    if (!ao_is_finite(radius_pixels)) radius_pixels = 0.0;
+    float radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
+
+    vec2 rotation = ao_noise_rotation(target_pixel);
+    vec2 centre = vec2(p) + 0.5;
+    float visibility_sum = 0.0; // sum of |n_p| (1 - popcount / 32) (cos n + n sin n)
+    float unoccluded_sum = 0.0; // sum of |n_p| (cos n + n sin n)
+    for (int s = 0; s < AO_VBAO_SLICES; ++s) {
+        float angle = float(s) * (AO_PI / float(AO_VBAO_SLICES));
+        vec2 base = vec2(cos(angle), sin(angle));
+        // The slice direction on screen (pixels, y down), and in view space (y up).
+        vec2 dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
+        vec3 dir_view = vec3(dir.x, -dir.y, 0.0);
+        vec3 side = ao_safe_normalize(dir_view - V * dot(dir_view, V), vec3(0.0));
+        if (dot(side, side) < 0.5) continue;
+        ao_half2 projected = ao_vbao_projected_normal(n, V, side); // (|n_p|, n)
+        if (!(projected.x > ao_half(0.0))) continue;
+
+        uint occluded = 0u;
+        for (int j = 1; j <= AO_VBAO_STEPS; ++j) {
+            vec2 offset = dir * (radius_pixels * (float(j) / float(AO_VBAO_STEPS)));
+            occluded |= ao_vbao_sample(centre + offset, p, P, V, n, 1.0, projected.y, radius);
+            occluded |= ao_vbao_sample(centre - offset, p, P, V, n, -1.0, projected.y, radius);
+        }
+        float whole = float(projected.x * ao_vbao_slice_unoccluded(projected.y));
+        visibility_sum += whole * float(ao_vbao_slice_visible(occluded));
+        unoccluded_sum += whole;
+    }
+    float visibility = unoccluded_sum > 0.0 ? clamp(visibility_sum / unoccluded_sum, 0.0, 1.0) : 1.0;
+    return visibility > 0.0 ? pow(visibility, u.strength) : 0.0;
+}
