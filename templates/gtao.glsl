@@ -10,7 +10,7 @@
 // jitter):
 //   1. project n onto the slice plane (spanned by V and the slice direction `side`):
 //      length |n_p|, signed angle n from V, positive toward `side`
-//      (ao_gtao_projected_normal);
+//      (common/slices.glsl's ao_slice_projected_normal, as the radius and slice frame);
 //   2. march AO_GTAO_STEPS steps to each side along the direction in screen space, at
 //      full resolution, step j at j / STEPS of the radius projected at P's depth (capped
 //      at half the screen's height), keeping per side the largest cosine between V and the
@@ -21,7 +21,7 @@
 //   3. horizon angles h+ = acos(cos+) in [0, pi], h- = -acos(cos-) in [-pi, 0], each
 //      clamped to [n - pi/2, n + pi/2] (the hemisphere around the normal);
 //   4. the slice integral a(h-, n) + a(h+, n) and its value for an unoccluded slice,
-//      cos n + n sin n (ao_gtao_slice_integral, ao_gtao_slice_unoccluded; below).
+//      cos n + n sin n (ao_gtao_slice_integral below; ao_slice_arc, ao_slice_unoccluded).
 // The visibility is sum |n_p| (a(h-, n) + a(h+, n)) / sum |n_p| (cos n + n sin n) over the
 // slices, raised to u.strength.
 //
@@ -121,30 +121,6 @@ float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float ma
     return mix(unoccluded, along_view / true_length, weight);
 }
 
-// The normal projected onto the plane of a slice: (|n_p|, n), n the signed angle of n_p
-// from V, positive toward `side`, in [-pi/2, pi/2]. V and `side` are unit and
-// perpendicular, an orthonormal basis of the slice plane, so n_p = x V + y side with
-// x = dot(n, V), y = dot(n, side); n faces V, so x >= 0. (0, 0) when the normal is
-// (nearly) perpendicular to the slice plane. From here on a slice's arithmetic is ao_half
-// (16-bit with the fp16 axis): angles and cosines in [-pi, pi], where a half's 4.9e-4
-// relative error is well below what the 8-bit output shows.
-ao_half2 ao_gtao_projected_normal(vec3 n, vec3 V, vec3 side)
-{
-    float x = dot(n, V);
-    float y = dot(n, side);
-    float n_length = sqrt(x * x + y * y);
-    if (!(n_length > 1e-6)) return ao_half2(0.0);
-    // atan(y, x) is undefined at x = 0 = y; x <= 0 (rounding) is a normal in the view plane.
-    ao_half n_angle = x > 0.0 ? atan(ao_half(y), ao_half(x)) : ao_half(y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
-    return ao_half2(n_length, clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI)));
-}
-
-// a(h, n) = integral from 0 to h of cos(t - n) |sin t| dt (the header's derivation).
-ao_half ao_gtao_arc(ao_half h, ao_half n)
-{
-    return ao_half(0.25) * (-cos(ao_half(2.0) * h - n) + cos(n) + ao_half(2.0) * h * sin(n));
-}
-
 // The slice integral a(h-, n) + a(h+, n), without the |n_p| factor, from the horizon
 // cosines of the two sides (-1: no horizon) and the projected normal's angle n.
 ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_ahead)
@@ -157,14 +133,7 @@ ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_
     // h+ in [0, pi], h- in [-pi, 0]; the clamp keeps h- <= 0 <= h+, as n +- pi/2 straddle 0.
     ao_half h_ahead = clamp(acos(c_ahead), n - half_pi, n + half_pi);
     ao_half h_behind = clamp(-acos(c_behind), n - half_pi, n + half_pi);
-    return ao_gtao_arc(h_behind, n) + ao_gtao_arc(h_ahead, n);
-}
-
-// The slice integral of an unoccluded slice, h+- = n +- pi/2: cos n + n sin n, in [1, pi/2].
-ao_half ao_gtao_slice_unoccluded(ao_half n_angle)
-{
-    ao_half n = clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
-    return cos(n) + n * sin(n);
+    return ao_slice_arc(h_behind, n) + ao_slice_arc(h_ahead, n);
 }
 
 float ao_pass(ivec2 target_pixel)
@@ -178,18 +147,10 @@ float ao_pass(ivec2 target_pixel)
     vec3 n;
     if (!ao_surface_normal(p, P, V, n)) return 1.0;
 
-    // The radius in full-resolution pixels at P's depth: clip y = proj[1][1] * y (/ -z).
-    vec2 fsize = vec2(ao_depth_size());
-    float pixels_per_unit = 0.5 * fsize.y * abs(u.proj[1][1]);
-#if !defined(AO_PROJECTION_ORTHOGRAPHIC)
-    pixels_per_unit /= max(-P.z, 1e-30);
-#endif
-    // Capped at half the screen's height: a radius past the screen spread its steps a third
-    // of the screen apart and stepped over every contact; the capped one finds what the
-    // screen shows. The world radius the cap leaves bounds the horizon search as u.radius does.
-    float radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
-    if (!ao_is_finite(radius_pixels)) radius_pixels = 0.0;
-    float radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
+    // The search radius on screen, capped at half its height, and the world radius the cap
+    // leaves, which bounds the horizon search as u.radius does (common/slices.glsl).
+    float radius_pixels, radius;
+    ao_slice_radius(P, radius_pixels, radius);
     float max_distance = radius * (1.0 + u.thickness_bias * 10.0);
 
     vec2 rotation = ao_noise_rotation(target_pixel);
@@ -197,14 +158,10 @@ float ao_pass(ivec2 target_pixel)
     float visibility_sum = 0.0; // sum of |n_p| (a(h-, n) + a(h+, n))
     float unoccluded_sum = 0.0; // sum of |n_p| (cos n + n sin n)
     for (int s = 0; s < AO_GTAO_SLICES; ++s) {
-        float angle = float(s) * (AO_PI / float(AO_GTAO_SLICES));
-        vec2 base = vec2(cos(angle), sin(angle));
-        // The slice direction on screen (pixels, y down), and in view space (y up).
-        vec2 dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
-        vec3 dir_view = vec3(dir.x, -dir.y, 0.0);
-        vec3 side = ao_safe_normalize(dir_view - V * dot(dir_view, V), vec3(0.0)); // in the slice plane, perpendicular to V
-        if (dot(side, side) < 0.5) continue;
-        ao_half2 projected = ao_gtao_projected_normal(n, V, side); // (|n_p|, n)
+        vec2 dir;  // on screen (pixels, y down)
+        vec3 side; // in the slice plane, perpendicular to V
+        if (!ao_slice_frame(s, AO_GTAO_SLICES, rotation, V, dir, side)) continue;
+        ao_half2 projected = ao_slice_projected_normal(n, V, side); // (|n_p|, n)
         if (!(projected.x > ao_half(0.0))) continue; // the normal is perpendicular to the slice
 
         // The horizons: the highest cosine on each side (in float: a max of floats; each
@@ -221,7 +178,7 @@ float ao_pass(ivec2 target_pixel)
         }
         ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
         visibility_sum += float(projected.x * integral);
-        unoccluded_sum += float(projected.x * ao_gtao_slice_unoccluded(projected.y));
+        unoccluded_sum += float(projected.x * ao_slice_unoccluded(projected.y));
     }
     float visibility = unoccluded_sum > 0.0 ? clamp(visibility_sum / unoccluded_sum, 0.0, 1.0) : 1.0;
     return visibility > 0.0 ? pow(visibility, u.strength) : 0.0;

@@ -8,9 +8,9 @@
 // directions at angles s * pi / SLICES, all rotated by the pixel's noise rotation, as GTAO's:
 //   1. project n onto the slice plane (spanned by V and the slice direction `side`):
 //      length |n_p| and signed angle n from V, positive toward `side`
-//      (ao_vbao_projected_normal). The directions of the slice that lie in the hemisphere
-//      around the normal are the angles theta in [n - pi/2, n + pi/2], theta measured from
-//      V, positive toward `side`;
+//      (common/slices.glsl's ao_slice_projected_normal). The directions of the slice that
+//      lie in the hemisphere around the normal are the angles theta in [n - pi/2, n + pi/2],
+//      theta measured from V, positive toward `side`;
 //   2. march AO_VBAO_STEPS steps to each side at gtao.glsl's screen positions (step j at
 //      j / STEPS of the radius projected at P's depth, capped at half the screen's height).
 //      A sample's surface point S (its front) and S pushed u.thickness away from the camera
@@ -86,44 +86,15 @@
 
 const uint AO_VBAO_SECTORS = 32u;
 
-// The normal projected onto the slice plane, as (|n_p|, n): V and `side` are an orthonormal
-// basis of that plane, so n_p = dot(n, V) V + dot(n, side) side, and n = atan(dot(n, side),
-// dot(n, V)) in [-pi/2, pi/2] (dot(n, V) >= 0: the normal faces V). (0, 0) for a normal
-// (nearly) perpendicular to the plane, which the caller skips.
-ao_half2 ao_vbao_projected_normal(vec3 n, vec3 V, vec3 side)
-{
-    vec2 in_plane = vec2(dot(n, V), dot(n, side));
-    float n_length = sqrt(in_plane.x * in_plane.x + in_plane.y * in_plane.y);
-    if (!(n_length > 1e-6)) return ao_half2(0.0);
-    // In the view plane (dot(n, V) <= 0 by rounding) atan(y, 0) would be +-pi/2 anyway; it
-    // is written out because atan(0, 0) is undefined.
-    ao_half angle = in_plane.x > 0.0 ? atan(ao_half(in_plane.y), ao_half(in_plane.x))
-                                     : ao_half(in_plane.y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
-    return ao_half2(n_length, clamp(angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI)));
-}
-
-// The unoccluded slice's measure, integral over [n - pi/2, n + pi/2] of cos(t - n) |sin t|:
-// cos n + n sin n, in [1, pi/2].
-ao_half ao_vbao_slice_unoccluded(ao_half n)
-{
-    return cos(n) + n * sin(n);
-}
-
-// F(t) = integral_0^t cos(x - n) sin x dx (the header's derivation; >= 0 for t in [n - pi/2, n + pi/2]).
-ao_half ao_vbao_antiderivative(ao_half t, ao_half n)
-{
-    return ao_half(0.25) * (cos(n) - cos(ao_half(2.0) * t - n) + ao_half(2.0) * t * sin(n));
-}
-
 // c(theta): the share of the slice's cosine-weighted measure between n - pi/2 and theta,
 // in [0, 1]; theta is clamped to the hemisphere first.
 ao_half ao_vbao_cumulative(ao_half theta, ao_half n)
 {
     const ao_half half_pi = ao_half(AO_HALF_PI);
     ao_half t = clamp(theta, n - half_pi, n + half_pi);
-    ao_half below_zero = ao_vbao_antiderivative(n - half_pi, n); // integral_lo^0
-    ao_half up_to_t = below_zero + sign(t) * ao_vbao_antiderivative(t, n);
-    return clamp(up_to_t / ao_vbao_slice_unoccluded(n), ao_half(0.0), ao_half(1.0));
+    ao_half below_zero = ao_slice_arc(n - half_pi, n); // integral_lo^0 (common/slices.glsl)
+    ao_half up_to_t = below_zero + sign(t) * ao_slice_arc(t, n);
+    return clamp(up_to_t / ao_slice_unoccluded(n), ao_half(0.0), ao_half(1.0));
 }
 
 // The mask of sectors 0 .. k - 1, for k in 0..32. A shift by 32 is undefined, so k = 32 is
@@ -209,30 +180,20 @@ float ao_pass(ivec2 target_pixel)
     vec3 n;
     if (!ao_surface_normal(p, P, V, n)) return 1.0;
 
-    // The radius in full-resolution pixels at P's depth and its cap at half the screen's
-    // height, as gtao.glsl: the world radius the cap leaves bounds the samples' distance.
-    vec2 fsize = vec2(ao_depth_size());
-    float pixels_per_unit = 0.5 * fsize.y * abs(u.proj[1][1]);
-#if !defined(AO_PROJECTION_ORTHOGRAPHIC)
-    pixels_per_unit /= max(-P.z, 1e-30);
-#endif
-    float radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
-    if (!ao_is_finite(radius_pixels)) radius_pixels = 0.0;
-    float radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
+    // The search radius on screen and the world radius its cap leaves (common/slices.glsl,
+    // as gtao.glsl): the latter bounds the samples' distance.
+    float radius_pixels, radius;
+    ao_slice_radius(P, radius_pixels, radius);
 
     vec2 rotation = ao_noise_rotation(target_pixel);
     vec2 centre = vec2(p) + 0.5;
     float visibility_sum = 0.0; // sum of |n_p| (1 - popcount / 32) (cos n + n sin n)
     float unoccluded_sum = 0.0; // sum of |n_p| (cos n + n sin n)
     for (int s = 0; s < AO_VBAO_SLICES; ++s) {
-        float angle = float(s) * (AO_PI / float(AO_VBAO_SLICES));
-        vec2 base = vec2(cos(angle), sin(angle));
-        // The slice direction on screen (pixels, y down), and in view space (y up).
-        vec2 dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
-        vec3 dir_view = vec3(dir.x, -dir.y, 0.0);
-        vec3 side = ao_safe_normalize(dir_view - V * dot(dir_view, V), vec3(0.0));
-        if (dot(side, side) < 0.5) continue;
-        ao_half2 projected = ao_vbao_projected_normal(n, V, side); // (|n_p|, n)
+        vec2 dir;  // on screen (pixels, y down)
+        vec3 side; // in the slice plane, perpendicular to V
+        if (!ao_slice_frame(s, AO_VBAO_SLICES, rotation, V, dir, side)) continue;
+        ao_half2 projected = ao_slice_projected_normal(n, V, side); // (|n_p|, n)
         if (!(projected.x > ao_half(0.0))) continue;
 
         uint occluded = 0u;
@@ -241,7 +202,7 @@ float ao_pass(ivec2 target_pixel)
             occluded |= ao_vbao_sample(centre + offset, p, P, V, n, 1.0, projected.y, radius);
             occluded |= ao_vbao_sample(centre - offset, p, P, V, n, -1.0, projected.y, radius);
         }
-        float whole = float(projected.x * ao_vbao_slice_unoccluded(projected.y));
+        float whole = float(projected.x * ao_slice_unoccluded(projected.y));
         visibility_sum += whole * float(ao_vbao_slice_visible(occluded));
         unoccluded_sum += whole;
     }

@@ -279,9 +279,9 @@ inline std::vector<std::string> template_files(const variant& v, pass_kind pass,
     case pass_kind::ao:
         files.insert(files.end(), {"common/normals.glsl", "common/noise.glsl"});
         if (v.tech == technique::gtao) {
-            files.push_back("gtao.glsl");
+            files.insert(files.end(), {"common/slices.glsl", "gtao.glsl"});
         } else if (v.tech == technique::vbao) {
-            files.push_back("vbao.glsl");
+            files.insert(files.end(), {"common/slices.glsl", "vbao.glsl"});
         } else {
             if (v.point_cloud_fallback) files.push_back("ssao_point_cloud.glsl");
             files.push_back("ssao.glsl");

@@ -5,7 +5,7 @@
 //
 // How the GLSL is evaluated without a GPU: the GTAO AO pass is generated as usual, with
 // entry_compute.glsl replaced by a test entry point whose main() calls gtao.glsl's
-// functions (ao_gtao_projected_normal, ao_gtao_slice_integral, ao_gtao_slice_unoccluded)
+// functions (ao_slice_projected_normal, ao_gtao_slice_integral, ao_slice_unoccluded)
 // with constant arguments and stores each result into a buffer. glslang compiles it;
 // spirv-opt's performance passes inline the calls and fold most of the arithmetic to
 // constants (SPIRV-Tools folds float arithmetic and GLSL.std.450's acos, atan2, cos,
@@ -120,10 +120,10 @@ double shader_ao(vec3d n, vec3d V, const visible_set& visible, int slices)
         const vec3d side = e1 * std::cos(phi) + e2 * std::sin(phi);
         const double cos_ahead = std::cos(first_hidden(V, side, visible));
         const double cos_behind = std::cos(first_hidden(V, side * -1.0, visible));
-        const std::string projected = "ao_gtao_projected_normal(" + glsl(n) + ", " + glsl(V) + ", " + glsl(side) + ")";
+        const std::string projected = "ao_slice_projected_normal(" + glsl(n) + ", " + glsl(V) + ", " + glsl(side) + ")";
         expressions.push_back(projected + ".x");
         expressions.push_back("ao_gtao_slice_integral(" + projected + ".y, " + lit(cos_behind) + ", " + lit(cos_ahead) + ")");
-        expressions.push_back("ao_gtao_slice_unoccluded(" + projected + ".y)");
+        expressions.push_back("ao_slice_unoccluded(" + projected + ".y)");
     }
     const std::vector<float> r = evaluate(expressions);
     double visibility = 0, unoccluded = 0;
@@ -156,7 +156,7 @@ TEST_CASE("gtao slice integral: the shader's a(h-, n) + a(h+, n) against quadrat
         // The unoccluded slice, both ways: no horizons, and the closed form.
         expressions.push_back("ao_gtao_slice_integral(" + lit(n) + ", -1.0, -1.0)");
         expected.push_back(slice_quadrature(n - half_pi, n + half_pi, n));
-        expressions.push_back("ao_gtao_slice_unoccluded(" + lit(n) + ")");
+        expressions.push_back("ao_slice_unoccluded(" + lit(n) + ")");
         expected.push_back(slice_quadrature(n - half_pi, n + half_pi, n));
     }
     const std::vector<float> got = evaluate(expressions);
@@ -165,8 +165,8 @@ TEST_CASE("gtao slice integral: the shader's a(h-, n) + a(h+, n) against quadrat
         CHECK(got[i] == Approx(expected[i]).margin(2e-6));
     }
     // cos n + n sin n: 1 facing V, pi/2 for a normal in the view plane.
-    CHECK(evaluate({"ao_gtao_slice_unoccluded(0.0)"})[0] == Approx(1.0).margin(1e-6));
-    CHECK(evaluate({"ao_gtao_slice_unoccluded(" + lit(half_pi) + ")"})[0] == Approx(half_pi).margin(1e-6));
+    CHECK(evaluate({"ao_slice_unoccluded(0.0)"})[0] == Approx(1.0).margin(1e-6));
+    CHECK(evaluate({"ao_slice_unoccluded(" + lit(half_pi) + ")"})[0] == Approx(half_pi).margin(1e-6));
 }
 
 TEST_CASE("gtao slice integral: horizons outside [-1, 1], NaN and infinity, degenerate projected normals",
@@ -182,12 +182,12 @@ TEST_CASE("gtao slice integral: horizons outside [-1, 1], NaN and infinity, dege
         "ao_gtao_slice_integral(9.0, 0.5, 0.5)",                 // 5: n clamped to pi/2
         "ao_gtao_slice_integral(" + lit(half_pi) + ", 0.5, 0.5)", // 6
         // Projected normals: perpendicular to the slice plane; in the view plane; tilted.
-        "ao_gtao_projected_normal(vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).x", // 7
-        "ao_gtao_projected_normal(vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).y", // 8
-        "ao_gtao_projected_normal(vec3(-1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).x", // 9
-        "ao_gtao_projected_normal(vec3(-1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).y", // 10
-        "ao_gtao_projected_normal(vec3(0.6, 0.0, 0.8), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).x",  // 11
-        "ao_gtao_projected_normal(vec3(0.6, 0.0, 0.8), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).y",  // 12
+        "ao_slice_projected_normal(vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).x", // 7
+        "ao_slice_projected_normal(vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).y", // 8
+        "ao_slice_projected_normal(vec3(-1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).x", // 9
+        "ao_slice_projected_normal(vec3(-1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).y", // 10
+        "ao_slice_projected_normal(vec3(0.6, 0.0, 0.8), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).x",  // 11
+        "ao_slice_projected_normal(vec3(0.6, 0.0, 0.8), vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0)).y",  // 12
         "ao_gtao_slice_integral(0.4, 1.0, 1.0)", // 13: both horizons at V: nothing visible
     });
     for (float x : r) CHECK(std::isfinite(x));

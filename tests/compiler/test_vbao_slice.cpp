@@ -104,10 +104,10 @@ double vbao_closed_form(dir3 n, dir3 V, const std::vector<dir3>& half_spaces, in
         const double phi = (k + 0.5) * pi / slices;
         const dir3 side = add({e1.x * std::cos(phi), e1.y * std::cos(phi), e1.z * std::cos(phi)}, e2, std::sin(phi));
         const double ahead = horizon(V, side, half_spaces), behind = -horizon(V, {-side.x, -side.y, -side.z}, half_spaces);
-        const std::string projected = "ao_vbao_projected_normal(" + vec(n) + ", " + vec(V) + ", " + vec(side) + ")";
+        const std::string projected = "ao_slice_projected_normal(" + vec(n) + ", " + vec(V) + ", " + vec(side) + ")";
         const std::string mask = "(ao_vbao_sectors(" + num(ahead) + ", " + num(pi) + ", " + projected + ".y) | ao_vbao_sectors(" +
                                  num(-pi) + ", " + num(behind) + ", " + projected + ".y))";
-        e.push_back(projected + ".x * ao_vbao_slice_unoccluded(" + projected + ".y)");
+        e.push_back(projected + ".x * ao_slice_unoccluded(" + projected + ".y)");
         e.push_back("ao_vbao_slice_visible(" + mask + ")");
     }
     const std::vector<float> r = vbao_eval(e);
@@ -132,8 +132,8 @@ TEST_CASE("vbao sectors: the cumulative is the cosine-weighted share of the slic
     // Past the hemisphere: clamped to its edges.
     e.push_back("ao_vbao_cumulative(" + num(-pi) + ", 0.4)"), expected.push_back(0.0);
     e.push_back("ao_vbao_cumulative(" + num(pi) + ", 0.4)"), expected.push_back(1.0);
-    e.push_back("ao_vbao_slice_unoccluded(0.0)"), expected.push_back(1.0);
-    e.push_back("ao_vbao_slice_unoccluded(" + num(half_pi) + ")"), expected.push_back(half_pi);
+    e.push_back("ao_slice_unoccluded(0.0)"), expected.push_back(1.0);
+    e.push_back("ao_slice_unoccluded(" + num(half_pi) + ")"), expected.push_back(half_pi);
     const std::vector<float> got = vbao_eval(e);
     for (size_t i = 0; i < got.size(); ++i) {
         INFO(e[i]);

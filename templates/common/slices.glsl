@@ -1,0 +1,73 @@
+// common/slices.glsl -- what the slice-based AO passes (gtao.glsl, vbao.glsl) share: the
+// search radius on screen, each slice's direction and plane, the normal projected onto that
+// plane, and the slice's cosine-weighted measure. gtao.glsl's header derives the measure.
+//
+// A slice is the plane through P spanned by V (toward the camera) and `side`, the screen
+// direction `dir` made perpendicular to V. Angles within it are signed angles from V,
+// positive toward `side`; the hemisphere around the normal is [n - pi/2, n + pi/2], n the
+// projected normal's angle. Over it the visible measure of directions is
+//     integral cos(t - n) |sin t| dt,
+// whose antiderivative from 0 is ao_slice_arc (both signs of t alike) and whose total is
+// ao_slice_unoccluded(n) = cos n + n sin n.
+
+// The search radius at P: `radius_pixels`, the world radius u.radius projected at P's depth
+// in full-resolution pixels (clip y = proj[1][1] * y (/ -z)), capped at half the screen's
+// height -- a radius past the screen spread its steps a third of the screen apart and
+// stepped over every contact; the capped one finds what the screen shows -- and the world
+// radius the cap leaves, which bounds how far a sample may lie from P.
+void ao_slice_radius(vec3 P, out float radius_pixels, out float radius)
+{
+    vec2 fsize = vec2(ao_depth_size());
+    float pixels_per_unit = 0.5 * fsize.y * abs(u.proj[1][1]);
+#if !defined(AO_PROJECTION_ORTHOGRAPHIC)
+    pixels_per_unit /= max(-P.z, 1e-30);
+#endif
+    radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
+    if (!ao_is_finite(radius_pixels)) radius_pixels = 0.0;
+    radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
+}
+
+// Slice s of `count`: the screen direction `dir` (pixels, y down) at angle s * pi / count,
+// rotated by the pixel's noise `rotation`, and `side`, its view-space direction (y up) made
+// perpendicular to V. False when the two are (nearly) parallel: no plane to integrate.
+bool ao_slice_frame(int s, int count, vec2 rotation, vec3 V, out vec2 dir, out vec3 side)
+{
+    float angle = float(s) * (AO_PI / float(count));
+    vec2 base = vec2(cos(angle), sin(angle));
+    dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
+    vec3 dir_view = vec3(dir.x, -dir.y, 0.0);
+    side = ao_safe_normalize(dir_view - V * dot(dir_view, V), vec3(0.0));
+    return dot(side, side) >= 0.5;
+}
+
+// The normal projected onto the slice plane: (|n_p|, n), n the signed angle of n_p from V,
+// positive toward `side`, in [-pi/2, pi/2]. V and `side` are unit and perpendicular, an
+// orthonormal basis of the plane, so n_p = x V + y side with x = dot(n, V), y = dot(n, side);
+// n faces V, so x >= 0. (0, 0) when the normal is (nearly) perpendicular to the plane. From
+// here on a slice's arithmetic is ao_half (16-bit with the fp16 axis): angles and cosines in
+// [-pi, pi], where a half's 4.9e-4 relative error is well below what the 8-bit output shows.
+ao_half2 ao_slice_projected_normal(vec3 n, vec3 V, vec3 side)
+{
+    float x = dot(n, V);
+    float y = dot(n, side);
+    float n_length = sqrt(x * x + y * y);
+    if (!(n_length > 1e-6)) return ao_half2(0.0);
+    // atan(y, x) is undefined at x = 0 = y; x <= 0 (rounding) is a normal in the view plane.
+    ao_half n_angle = x > 0.0 ? atan(ao_half(y), ao_half(x)) : ao_half(y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
+    return ao_half2(n_length, clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI)));
+}
+
+// a(h, n) = integral from 0 to h of cos(t - n) |sin t| dt, for h of either sign (gtao.glsl's
+// header): (-cos(2h - n) + cos n + 2 h sin n) / 4, >= 0 on the hemisphere.
+ao_half ao_slice_arc(ao_half h, ao_half n)
+{
+    return ao_half(0.25) * (-cos(ao_half(2.0) * h - n) + cos(n) + ao_half(2.0) * h * sin(n));
+}
+
+// The measure of the whole hemisphere, a(n - pi/2, n) + a(n + pi/2, n) = cos n + n sin n, in
+// [1, pi/2].
+ao_half ao_slice_unoccluded(ao_half n_angle)
+{
+    ao_half n = clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
+    return cos(n) + n * sin(n);
+}
