@@ -126,8 +126,11 @@ public:
             if (essl) entries[compile::to_name(compile::target::essl)] = essl->refl.entry_points.at(compile::target::essl);
             pass["entry_points"] = entries;
             pass["bindings"] = bindings_json(c.refl);
-            if (stage == shader_stage::compute)
+            if (stage == shader_stage::compute) {
                 pass["workgroup_size"] = {c.refl.workgroup_size[0], c.refl.workgroup_size[1], c.refl.workgroup_size[2]};
+                // Dispatch ceil(output size / pixels_per_invocation / workgroup size) groups.
+                pass["pixels_per_invocation"] = pixels_per_invocation(s.pass, pipeline_stage::compute);
+            }
             const std::string pass_id = identifier(pass["pass"].get<std::string>() + "_" + file_extension(s.stage));
             ns_body += "// pass " + pass["pass"].get<std::string>() + ", " + to_name(stage) + " shader\n";
             ns_body += spirv_array(pass_id + "_spv", c.spirv);

@@ -2,7 +2,9 @@
 // of the pass's output, workgroups of AO_WORKGROUP_X x AO_WORKGROUP_Y. Dispatch
 // ceil(width / AO_WORKGROUP_X) x ceil(height / AO_WORKGROUP_Y) groups for the output
 // image's size; invocations past its edge write nothing. A pass that defines
-// AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first.
+// AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first; one that defines
+// AO_PASS_WRITES_QUADS writes 2 x 2 pixels per invocation (aogen::pixels_per_invocation):
+// dispatch it over ceil(width / 2) x ceil(height / 2).
 //
 // Binding AO_BINDING_OUTPUT: the output, a storage image of the pass's output size (the AO target's; the screen's for upsample) in the
 // format AO_OUTPUT_FORMAT (codegen::options::output_format): r8 (R8_UNORM, the default),
@@ -22,6 +24,26 @@ layout(set = 0, binding = AO_BINDING_OUTPUT, AO_OUTPUT_FORMAT) uniform writeonly
 layout(set = 0, binding = AO_BINDING_RAW, r32f) uniform writeonly image2D u_raw;
 #endif
 
+#if defined(AO_PASS_WRITES_QUADS)
+// A pass whose invocation writes a 2 x 2 square of output pixels (upsample.glsl): its
+// ao_pass_quad(i) returns the pixels 2 i + (0, 0), (1, 0), (0, 1), (1, 1), and those inside
+// the image are stored. Dispatch it over half the output's size, rounded up.
+void main()
+{
+    ivec2 invocation = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = imageSize(u_output);
+    if (2 * invocation.x >= size.x || 2 * invocation.y >= size.y) return;
+    vec4 ao = ao_pass_quad(invocation);
+    for (int k = 0; k < 4; ++k) {
+        ivec2 pixel = 2 * invocation + ivec2(k & 1, k >> 1);
+        if (pixel.x >= size.x || pixel.y >= size.y) continue;
+#if defined(AO_DIAGNOSTICS)
+        imageStore(u_raw, pixel, vec4(ao[k]));
+#endif
+        imageStore(u_output, pixel, vec4(ao_finalize(ao[k]), 0.0, 0.0, 1.0));
+    }
+}
+#else
 void main()
 {
 #if defined(AO_PASS_LOADS_TILE)
@@ -39,3 +61,4 @@ void main()
 #endif
     imageStore(u_output, pixel, vec4(ao_finalize(ao), 0.0, 0.0, 1.0));
 }
+#endif

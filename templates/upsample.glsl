@@ -3,8 +3,9 @@
 // upsample_mode::depth_aware. Uniform block: BlurUniforms (u.inv_proj, u.linear_sharpness).
 //
 // Bindings: AO_BINDING_DEPTH the full-resolution depth, AO_BINDING_AO_INPUT the AO target
-// (half resolution, its value in .r). Unlike every other pass, this one runs per screen
-// pixel: its output is the screen's size.
+// (half resolution, its value in .r). Unlike every other pass, its output is the screen's
+// size: fragment passes run per screen pixel, compute passes per target texel, each
+// invocation writing the 2 x 2 screen pixels the texel covers (see ao_pass_quad).
 //
 // THE WEIGHTS
 //   Target texel q stands for screen pixel 2q (depth.glsl: it read its depth and normal
@@ -31,13 +32,96 @@
 
 layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
 
-// The AO of target texel q (inside the target), made finite and in [0, 1].
-float ao_upsample_input(ivec2 q)
+// The four target texels around screen pixel 2 q0 .. 2 q0 + 1, in the order q0, q0 + (1, 0),
+// q0 + (0, 1), q0 + (1, 1): their AO (finite, in [0, 1]), their view z, and whether each
+// counts (inside the target, on a surface, with a finite z).
+struct ao_candidates {
+    vec4 ao;
+    vec4 z;
+    bvec4 valid;
+};
+
+ao_candidates ao_upsample_candidates(ivec2 q0)
 {
-    return ao_finalize(texelFetch(u_ao_input, q, 0).r);
+    ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
+    ao_candidates c;
+#if defined(AO_STAGE_COMPUTE)
+    // One gather for the four: the texels around q0 + 1's corner, in textureGather's order
+    // (q0 + (0, 1), q0 + (1, 1), q0 + (1, 0), q0); clamp-to-edge repeats the last row or
+    // column past the target, and those candidates are not valid below anyway.
+    vec4 g = textureGather(u_ao_input, vec2(q0 + 1) / vec2(size), 0);
+    c.ao = vec4(g.w, g.z, g.x, g.y);
+#endif
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = q0 + ivec2(k & 1, k >> 1);
+        bool inside = q.x < size.x && q.y < size.y;
+        ivec2 qc = min(q, size - 1);
+#if !defined(AO_STAGE_COMPUTE)
+        c.ao[k] = texelFetch(u_ao_input, qc, 0).r;
+#endif
+        c.ao[k] = ao_finalize(c.ao[k]);
+        ivec2 q_full = ao_full_pixel(qc);
+        float q_depth = ao_load_depth(q_full);
+        c.z[k] = ao_is_background(q_depth) ? 0.0 : ao_view_z(ao_pixel_uv(q_full), q_depth);
+        c.valid[k] = inside && !ao_is_background(q_depth) && ao_is_finite(c.z[k]);
+    }
+    return c;
 }
 
-// `pixel` is a screen pixel here, not a target pixel.
+// The upsampled AO of screen pixel P, with raw depth `depth` (not background), from the
+// candidates around it (q0 = P / 2): the weights of the header, the nearest texel in depth
+// where they all underflow, q0's value where no candidate counts.
+float ao_upsample_blend(ivec2 P, float depth, ivec2 q0, ao_candidates c)
+{
+    float z = ao_view_z(ao_pixel_uv(P), depth);
+    if (!ao_is_finite(z)) return c.ao.x;
+    vec2 f = vec2(P - 2 * q0) * 0.5;
+    vec4 bilinear = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    float sum = 0.0;
+    float weight_sum = 0.0;
+    float nearest = c.ao.x;
+    float nearest_dz = -1.0; // none yet
+    for (int k = 0; k < 4; ++k) {
+        if (!c.valid[k]) continue;
+        float dz = abs(c.z[k] - z);
+        if (!ao_is_finite(dz)) continue;
+        if (nearest_dz < 0.0 || dz < nearest_dz) {
+            nearest_dz = dz;
+            nearest = c.ao[k];
+        }
+        float w = bilinear[k] * exp(-dz * u.linear_sharpness);
+        if (!(w > 0.0)) continue; // off the footprint, or underflowed
+        sum += w * c.ao[k];
+        weight_sum += w;
+    }
+    return weight_sum > 0.0 ? sum / weight_sum : nearest;
+}
+
+#if defined(AO_STAGE_COMPUTE)
+// Compute passes: one invocation per target texel q0, writing the 2 x 2 screen pixels it
+// covers (entry_compute.glsl: AO_PASS_WRITES_QUADS; dispatch over the target's size). The
+// four share one gather of their depths, the candidates' four depth loads and one gather of
+// their AO: 6 fetches per 4 pixels instead of 9 per pixel, which is what bounds this pass.
+#define AO_PASS_WRITES_QUADS
+
+// The screen pixels 2 q0 + (0, 0), (1, 0), (0, 1), (1, 1), in that order.
+vec4 ao_pass_quad(ivec2 q0)
+{
+    vec4 g = ao_depth_quad(2 * q0); // textureGather's order: (0, 1), (1, 1), (1, 0), (0, 0)
+    vec4 depth = vec4(g.w, g.z, g.x, g.y);
+    if (ao_is_background(depth.x) && ao_is_background(depth.y) && ao_is_background(depth.z) && ao_is_background(depth.w))
+        return vec4(1.0);
+    ivec2 last = ao_depth_size() - 1;
+    ao_candidates c = ao_upsample_candidates(q0);
+    vec4 ao;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 P = min(2 * q0 + ivec2(k & 1, k >> 1), last);
+        ao[k] = ao_is_background(depth[k]) ? 1.0 : ao_upsample_blend(P, depth[k], q0, c);
+    }
+    return ao;
+}
+#else
+// Fragment passes: one fragment per screen pixel.
 float ao_pass(ivec2 pixel)
 {
     ivec2 P = clamp(pixel, ivec2(0), ao_depth_size() - 1);
@@ -45,34 +129,6 @@ float ao_pass(ivec2 pixel)
     if (ao_is_background(depth)) return 1.0;
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
     ivec2 q0 = clamp(P / 2, ivec2(0), size - 1);
-    float z = ao_view_z(ao_pixel_uv(P), depth);
-    if (!ao_is_finite(z)) return ao_upsample_input(q0);
-
-    vec2 f = vec2(P - 2 * q0) * 0.5;
-    float sum = 0.0;
-    float weight_sum = 0.0;
-    float nearest = ao_upsample_input(q0);
-    float nearest_dz = -1.0; // none yet
-    for (int j = 0; j <= 1; ++j) {
-        for (int i = 0; i <= 1; ++i) {
-            ivec2 q = q0 + ivec2(i, j);
-            if (q.x >= size.x || q.y >= size.y) continue;
-            ivec2 q_full = ao_full_pixel(q);
-            float q_depth = ao_load_depth(q_full);
-            if (ao_is_background(q_depth)) continue;
-            float dz = abs(ao_view_z(ao_pixel_uv(q_full), q_depth) - z);
-            if (!ao_is_finite(dz)) continue;
-            float ao = ao_upsample_input(q);
-            if (nearest_dz < 0.0 || dz < nearest_dz) {
-                nearest_dz = dz;
-                nearest = ao;
-            }
-            float bilinear = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
-            float w = bilinear * exp(-dz * u.linear_sharpness);
-            if (!(w > 0.0)) continue; // off the footprint, or underflowed
-            sum += w * ao;
-            weight_sum += w;
-        }
-    }
-    return weight_sum > 0.0 ? sum / weight_sum : nearest;
+    return ao_upsample_blend(P, depth, q0, ao_upsample_candidates(q0));
 }
+#endif

@@ -181,6 +181,15 @@ inline bool has_upsample_pass(const variant& v)
     return v.half_resolution && v.upsample == upsample_mode::depth_aware;
 }
 
+// The side of the square of output pixels one invocation of `pass` writes: 2 for the
+// upsample pass in compute (one invocation per target texel, each writing the 2 × 2 screen
+// pixels it covers: upsample.glsl), 1 for every other pass. A compute pass is dispatched
+// over its output's size divided by this, rounded up.
+inline int pixels_per_invocation(pass_kind pass, pipeline_stage stage)
+{
+    return pass == pass_kind::upsample && stage == pipeline_stage::compute ? 2 : 1;
+}
+
 inline std::vector<pass_kind> passes(const variant& v)
 {
     std::vector<pass_kind> p{pass_kind::ao};

@@ -142,6 +142,7 @@ ao = m['variants'][0]
 assert ao['bindings'][0]['kind'] == 'uniform_buffer' and ao['uniforms']['name'] == 'SsaoUniforms', ao['bindings']
 assert ao['uniforms']['size'] == 496 and ao['passes'][0]['workgroup_size'] == [8, 8, 1]
 assert [p['pass'] for p in ao['passes']] == ['ao', 'blur_x', 'blur_y', 'upsample']
+assert [p['pixels_per_invocation'] for p in ao['passes']] == [1, 1, 1, 2], 'the upsample writes 2x2 pixels per invocation'
 fs = m['variants'][1]
 assert [(p['pass'], p['stage']) for p in fs['passes']] == [('ao', 'vertex'), ('ao', 'fragment'), ('blur_box', 'vertex'), ('blur_box', 'fragment')]
 assert not any(b['binding'] == 2 for b in fs['bindings']), 'reconstructed normals declare no normal buffer'

@@ -219,6 +219,15 @@ TEST_CASE("params: defaults validate and follow DESIGN.md, GTAO's strength and t
     CHECK(g.thickness_bias == 0.075f);
     CHECK(g.strength == 1.109375f);
     CHECK(aogen::gtao_params::radius_per_ao_radius == 0.78125f);
+    // Falloff and thin-occluder compensation: the search (BENCHMARKS.md) kept both off.
+    CHECK(g.falloff_range == 0.0f);
+    CHECK(g.thin_occluder == 0.0f);
+    // VBAO's, tuned the same way (params.hpp).
+    const aogen::vbao_params vb;
+    CHECK_NOTHROW(aogen::validate(vb));
+    CHECK(aogen::vbao_params::radius_per_ao_radius == 1.15625f);
+    CHECK(vb.thickness == 1.634375f);
+    CHECK(vb.strength == 1.28125f);
     CHECK(b.mode == aogen::blur_mode::bilateral);
     CHECK(b.depth == aogen::bilateral_depth::linear);
     CHECK(b.raw_depth_k == 1000.0f);

@@ -1,21 +1,16 @@
-// floor/upsample.glsl -- the fetch floor of upsample.glsl: the screen pixel's depth, then the
-// depth and AO of the (up to) four target texels around it. No weights.
+// floor/upsample.glsl -- the fetch floor of upsample.glsl's compute pass (floors are compute
+// kernels): per invocation, for the 2 x 2 screen pixels of target texel q0, one gather of
+// their depths, the depths of the four target texels around them and one gather of those
+// texels' AO. No weights.
 
 layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
 
-float ao_pass(ivec2 pixel)
+#define AO_PASS_WRITES_QUADS
+
+vec4 ao_pass_quad(ivec2 q0)
 {
-    ivec2 P = clamp(pixel, ivec2(0), ao_depth_size() - 1);
-    float depth = ao_load_depth(P);
-    if (ao_is_background(depth)) return 1.0;
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
-    ivec2 q0 = clamp(P / 2, ivec2(0), size - 1);
-    float sum = depth;
-    for (int j = 0; j <= 1; ++j)
-        for (int i = 0; i <= 1; ++i) {
-            ivec2 q = q0 + ivec2(i, j);
-            if (q.x >= size.x || q.y >= size.y) continue;
-            sum += ao_load_depth(ao_full_pixel(q)) + texelFetch(u_ao_input, q, 0).r;
-        }
+    vec4 sum = ao_depth_quad(2 * q0) + textureGather(u_ao_input, vec2(q0 + 1) / vec2(size), 0);
+    for (int k = 0; k < 4; ++k) sum[k] += ao_load_depth(ao_full_pixel(min(q0 + ivec2(k & 1, k >> 1), size - 1)));
     return fract(sum);
 }

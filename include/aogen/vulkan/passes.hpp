@@ -5,7 +5,8 @@
 //   a spirv_cache when one is given) into a pipeline, with a descriptor set layout made from
 //   the pass's codegen::resource list, and records a pass into a command buffer:
 //     compute   one compute pipeline per pass; the output is a storage image (GENERAL);
-//               record() dispatches ceil(w / workgroup_x) × ceil(h / workgroup_y) groups.
+//               record() dispatches ceil(w / workgroup_x) × ceil(h / workgroup_y) groups
+//               (w and h divided by pixels_per_invocation first: the upsample's halves).
 //     fragment  one graphics pipeline per pass: the fullscreen-triangle vertex shader
 //               (compiled once: its text is the same in every pass) and the pass's
 //               fragment shader, into one R8_UNORM colour attachment through a render
@@ -149,7 +150,8 @@ public:
             vkCmdDraw(cb, 3, 1, 0, 0); // the fullscreen triangle from gl_VertexIndex
             vkCmdEndRenderPass(cb);
         } else {
-            vkCmdDispatch(cb, groups(w, workgroup_x_), groups(h, workgroup_y_), 1);
+            const int k = pixels_per_invocation(p.kind, pipeline_stage::compute);
+            vkCmdDispatch(cb, groups((w + k - 1) / k, workgroup_x_), groups((h + k - 1) / k, workgroup_y_), 1);
         }
     }
 
