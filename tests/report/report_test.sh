@@ -166,16 +166,16 @@ tune)
 import json, math, sys
 r = json.load(open(sys.argv[1]))
 g, s = r["variants"]
-assert g["variants"] == ["gtao-1x2-half-noblur-gbufworld-std-persp-cs"] and g["evaluations"] == 32, g  # 2^5 settings
-assert s["evaluations"] == 4, s                                                                      # 2^2
+assert g["variants"] == ["gtao-1x2-half-noblur-gbufworld-std-persp-cs"] and g["evaluations"] == 64, g  # 2^6 settings
+assert s["evaluations"] == 8, s                                                                      # 2^3
 assert g["best"]["strength"] in (0.25, 3.0) and g["best"]["radius_scale"] in (0.5, 2.0), g["best"]  # grid corners
 assert all(abs(g["defaults"][k] - x) < 1e-7 for k, x in {"radius_scale": 0.78125, "strength": 1.109375, "thickness_bias": 0.075,
-                                                         "falloff_range": 0.0, "thin_occluder": 0.0}.items()), g["defaults"]
+                                                         "falloff_range": 0.0, "thin_occluder": 0.0, "blur_sharpness": 10.0}.items()), g["defaults"]
 for v in (g, s):
     for k in ("train_rmse", "validate_rmse", "default_train_rmse", "default_validate_rmse"):
         assert 0 < v[k] < 0.5 and math.isfinite(v[k]), (k, v[k])
 PY
-  grep -q "| \`gtao-1x2-half-noblur-gbufworld-std-persp-cs\` | radius_scale, strength, thickness_bias, falloff_range, thin_occluder |" "$work/tune.md" ||
+  grep -q "| \`gtao-1x2-half-noblur-gbufworld-std-persp-cs\` | radius_scale, strength, thickness_bias, falloff_range, thin_occluder, blur_sharpness |" "$work/tune.md" ||
     fail "the table lacks the GTAO row"
   # --axes: only the named parameters are searched, in the order given; an unknown one is refused by name.
   "$tune" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --axes thin_occluder,falloff_range --train crease --validate wall \
@@ -185,7 +185,7 @@ PY
   if "$tune" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --axes bias --train crease --validate wall --out "$work/bad.json" 2>"$work/err"; then
     fail "an unknown --axes name was accepted"
   fi
-  grep -q "bias.*is not a parameter of gtao.*valid: radius_scale, strength, thickness_bias, falloff_range, thin_occluder" "$work/err" ||
+  grep -q "bias.*is not a parameter of gtao.*valid: radius_scale, strength, thickness_bias, falloff_range, thin_occluder, blur_sharpness" "$work/err" ||
     fail "the unknown axis error does not name it and the valid ones: $(cat "$work/err")"
   [ ! -e "$work/bad.json" ] || fail "a refused search wrote its output"
   ;;

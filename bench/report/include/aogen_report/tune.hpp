@@ -51,8 +51,9 @@ struct tune_axis {
 //          thin_occluder (how much longer depth offsets count);
 //   vbao   radius_scale, strength, thickness (each sample's depth, a fraction of the radius);
 //   ssao   radius_scale, strength (1 − occlusion·strength); the bias keeps its ratio to
-//          the radius, as the presets have it.
-inline std::vector<tune_axis> tune_axes(const aogen::variant& v)
+//          the radius, as the presets have it;
+// then, for every technique, blur_sharpness (tune_axes).
+inline std::vector<tune_axis> technique_axes(const aogen::variant& v)
 {
     using settings = aogen::vulkan::chain_settings;
     if (v.tech == aogen::technique::gtao)
@@ -87,6 +88,17 @@ inline std::vector<tune_axis> tune_axes(const aogen::variant& v)
         {{"strength", 0.5, 8.0}, [] { return double(aogen::presets::taos_ssao().ssao.strength); },
          [](settings& c, float, double x) { c.ssao.strength = float(x); }},
     };
+}
+
+// technique_axes(v), then the one every chain has: blur_sharpness, the depth term's
+// sharpness of the blurs and the upsample (blur_params::linear_sharpness) per 1 / R (a
+// chain with neither does not read it).
+inline std::vector<tune_axis> tune_axes(const aogen::variant& v)
+{
+    std::vector<tune_axis> axes = technique_axes(v);
+    axes.push_back({{"blur_sharpness", 1.0, 100.0}, [] { return double(aogen::blur_params{}.linear_sharpness); },
+                    [](aogen::vulkan::chain_settings& c, float R, double x) { c.blur.linear_sharpness = float(x) / R; }});
+    return axes;
 }
 
 // The axes of `v`'s technique called `names` (all of them when `names` is empty); an
