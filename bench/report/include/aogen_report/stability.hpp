@@ -243,8 +243,20 @@ inline stability_case builtin_case(const std::string& name)
     if (name == "ortho_near0_offcentre") {
         s.camera.projection = aogen::scenes::projection_kind::orthographic;
         s.camera.left = -0.5f, s.camera.right = 2.5f, s.camera.bottom = -0.6f, s.camera.top = 1.1f, s.camera.near = 0.0f;
+        // The twin sees the same region through a centred frustum with near 0.1: the camera
+        // moved by the frustum's centre (1, 0.25) along its right and up vectors, so the two
+        // differ in nothing but the projection (a centred twin of the old camera saw other
+        // parts of the scene, and its error was no bound on this one's).
         t = s, t.camera.left = -1.5f, t.camera.right = 1.5f, t.camera.bottom = -0.85f, t.camera.top = 0.85f, t.camera.near = 0.1f;
-        return make(name, "an orthographic camera with near 0 and an off-centre frustum", s, t);
+        aogen::scenes::dvec3 right, up, back;
+        s.camera.basis(right, up, back);
+        const aogen::scenes::dvec3 shift = 1.0 * right + 0.25 * up;
+        t.camera.eye = s.camera.eye + shift, t.camera.target = s.camera.target + shift;
+        stability_case c = make(name, "an orthographic camera with near 0 and an off-centre frustum", s, t);
+        // The same pixels of the same surfaces: the error may differ by rounding only (every
+        // default variant within 4.2e-5 of its twin on lavapipe).
+        c.criterion.error_ratio = 1.02, c.criterion.error_slack = 0.002;
+        return c;
     }
     if (name == "far_from_origin") {
         s = detail::scaled(box, 1, {1e7, -1e7, 1e7});
