@@ -107,8 +107,9 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
                                                      : ": far from 100 %, so either the GPU idled inside the rounds or its timestamps do not keep time — read the times with care\n");
     md << "- Command: `" << meta.command << "`\n\n";
     md << "**How to read it.** Error is the RMSE of the variant's AO against the ray-traced reference over the pixels that show "
-          "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution AO is compared after "
-          "nearest upsampling to full resolution. *Default*: the variant's default parameters (seed presets, lengths scaled to "
+          "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution variants are scored at "
+          "full resolution as displayed: through their depth-aware upsample pass, or, for `-nearest` variants, after nearest "
+          "upsampling. *Default*: the variant's default parameters (seed presets, lengths scaled to "
           "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
           "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median (p10–p90 likewise). "
           "*Floor* is the variant's fetch floor: its passes' texel fetches at the same positions with none of the shading "
