@@ -88,6 +88,7 @@ inline feature_list features(const variant& v, const scene_needs* scene = nullpt
                                        : std::string("the variant's blur is ") + to_name(v.blur);
     detail::feature(f, v.blur == blur_mode::bilateral, "bilateral blur", blur_why);
     detail::feature(f, v.blur == blur_mode::box, "box blur", blur_why);
+    detail::feature(f, v.blur == blur_mode::denoise, "edge-aware denoise", blur_why);
     f.compiled.push_back(std::string("depth: ") + names::name_of(depth_convention_names, v.depth, "depth"));
     f.compiled.push_back(std::string("projection: ") + names::name_of(projection_kind_names, v.projection, "projection"));
     f.compiled.push_back(v.half_resolution ? "half resolution" : "full resolution");
@@ -95,6 +96,9 @@ inline feature_list features(const variant& v, const scene_needs* scene = nullpt
         f.left_out.push_back({"half-resolution downsampling", scene && !scene->half_resolution_ok
                                                                   ? "the scene does not accept half resolution"
                                                                   : "the variant runs at full resolution"});
+    detail::feature(f, has_upsample_pass(v), "depth-aware upsample",
+                    v.half_resolution ? "the variant leaves its half-resolution target to the caller (-nearest)"
+                                      : "the variant runs at full resolution");
     return f;
 }
 

@@ -213,7 +213,16 @@ TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and
     CHECK(left.count("normal buffer input"));
     CHECK(left.count("bilateral blur"));
     CHECK(left.count("box blur"));
+    CHECK(left.count("edge-aware denoise"));
+    CHECK(left.count("depth-aware upsample")); // full resolution: nothing to upsample
     CHECK_FALSE(left.count("point-cloud fallback"));
+    // Half resolution compiles the upsample in, unless -nearest leaves it to the caller.
+    auto compiled = [](const variant& v) {
+        const feature_list f = features(v);
+        return std::set<std::string>(f.compiled.begin(), f.compiled.end());
+    };
+    CHECK(compiled(variant{}).count("depth-aware upsample"));
+    CHECK_FALSE(compiled(variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-nearest")).count("depth-aware upsample"));
 }
 
 TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
