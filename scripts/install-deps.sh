@@ -17,6 +17,7 @@ packages=(
   libstb-dev                  # PNG image strips of the report (stb_image_write)
   python3-matplotlib          # the report's error-against-time plot
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers   # the Vulkan harness (lavapipe)
+  libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # the GL runner (llvmpipe, EGL surfaceless)
   clang-14 libclang-rt-14-dev # the fuzz targets (tests/fuzz, scripts/fuzz.sh): libFuzzer, ASan, UBSan
   llvm-14                     # llvm-symbolizer: function names and lines in the fuzz targets' reports
 )

@@ -60,14 +60,6 @@
 
 namespace aogen::vulkan {
 
-struct chain_settings {
-    ssao_params ssao;   // ssao.samples is taken from the variant
-    gtao_params gtao;
-    vbao_params vbao;
-    blur_params blur;
-    uniforms::camera camera;
-};
-
 struct run_options {
     float clear = 0.0f;                             // value every AO image holds before its pass writes it
     depth_format depth = depth_format::r32_sfloat;  // how the depth buffer reaches the shaders
@@ -77,42 +69,11 @@ struct chain_options {
     bool diagnostics = false; // every pass also stores its raw value (codegen::options::diagnostics)
 };
 
-// The AO target size of `v` for a G-buffer of w × h.
-inline std::pair<int, int> target_size(const variant& v, int w, int h)
-{
-    return v.half_resolution ? std::pair<int, int>{(w + 1) / 2, (h + 1) / 2} : std::pair<int, int>{w, h};
-}
-
-// The size of `v`'s output for a G-buffer of w × h: the screen's when the chain ends with
-// the depth-aware upsample pass, the AO target's otherwise.
-inline std::pair<int, int> output_size(const variant& v, int w, int h)
-{
-    return has_upsample_pass(v) ? std::pair<int, int>{w, h} : target_size(v, w, h);
-}
-
-// What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
-// target_w × target_h: each pass's std140 uniform block, the noise tile the params name
-// (4×4 for GTAO and VBAO) and, for SSAO, the kernel inside its block.
-inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
-{
-    constexpr layout::rules rules = layout::rules::std140;
-    ssao_params ssao = s.ssao;
-    ssao.samples = v.ssao_samples;
-    chain_inputs in;
-    in.noise_size = has_slices(v.tech) ? 4 : ssao.noise_size;
-    in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
-    const vec2 tsize{float(target_w), float(target_h)};
-    for (pass_kind pass : passes(v)) {
-        if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules));
-        else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size));
-        else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size));
-        else {
-            const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), ssao.samples, ssao.kernel_seed);
-            in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules));
-        }
-    }
-    return in;
-}
+// chain_settings, target_size, output_size and inputs_for are aogen/chain_inputs.hpp's.
+using aogen::chain_settings;
+using aogen::inputs_for;
+using aogen::output_size;
+using aogen::target_size;
 
 class chain {
 public:

@@ -25,6 +25,7 @@
 //   D32_SFLOAT (naming the pixel), a failing Vulkan call.
 #pragma once
 
+#include "../chain_inputs.hpp"
 #include "../names.hpp"
 #include "resources.hpp"
 
@@ -35,11 +36,10 @@
 
 namespace aogen::vulkan {
 
-struct gbuffer {
-    int width = 0, height = 0;
-    std::vector<float> depth;   // width × height raw depth values
-    std::vector<float> normals; // width × height × 4 (xyz used); may be empty for reconstructed normals
-};
+// The G-buffer and a chain's other inputs are aogen/chain_inputs.hpp's (no Vulkan in them:
+// the GL runner reads the same).
+using aogen::chain_inputs;
+using aogen::gbuffer;
 
 // The image the depth buffer is uploaded to.
 enum class depth_format {
@@ -51,12 +51,6 @@ inline constexpr std::array<enum_name<depth_format>, 2> depth_format_names{{
     {depth_format::d32_sfloat, "d32_sfloat"},
 }};
 
-// The bytes a chain's passes read besides the G-buffer.
-struct chain_inputs {
-    std::vector<std::vector<uint8_t>> uniforms; // one std140 block per pass, in pass order
-    int noise_size = 4;                         // the noise tile is noise_size × noise_size
-    std::vector<uint8_t> noise;                 // its RGBA32F texels, row-major
-};
 
 class gpu_gbuffer {
 public:

@@ -1,0 +1,90 @@
+// aogen/chain_inputs.hpp — what a variant's chain reads, as bytes: the G-buffer, each pass's
+// uniform block, the noise tile; and the sizes of its target and its output.
+//
+// WHAT
+//   The data every runner of a chain uploads, with no API in it: aogen::vulkan's harness and
+//   aogen::gl's runner read the same bytes, so their outputs can be compared pixel for pixel.
+//     gbuffer         raw depth and normals as floats, row-major, top row first
+//     chain_settings  the params of every pass and the camera
+//     inputs_for(v, settings, target_w, target_h)
+//                     the std140 uniform block of each pass of `v`, the noise tile the
+//                     params name (4 × 4 for GTAO and VBAO) and, for SSAO, its kernel
+//     target_size     the AO target: the G-buffer's size, or half of it rounded up
+//     output_size     what the chain returns: the screen when it ends with the upsample
+//
+// USAGE
+//     aogen::chain_settings s;                                      // params + camera
+//     auto [tw, th] = aogen::target_size(v, w, h);
+//     aogen::chain_inputs in = aogen::inputs_for(v, s, tw, th);    // in.uniforms[pass]
+#pragma once
+
+#include "kernel.hpp"
+#include "noise.hpp"
+#include "uniforms.hpp"
+#include "variant.hpp"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace aogen {
+
+struct gbuffer {
+    int width = 0, height = 0;
+    std::vector<float> depth;   // width × height raw depth values
+    std::vector<float> normals; // width × height × 4 (xyz used); may be empty for reconstructed normals
+};
+
+// The bytes a chain's passes read besides the G-buffer.
+struct chain_inputs {
+    std::vector<std::vector<uint8_t>> uniforms; // one std140 block per pass, in pass order
+    int noise_size = 4;                         // the noise tile is noise_size × noise_size
+    std::vector<uint8_t> noise;                 // its RGBA32F texels, row-major
+};
+
+struct chain_settings {
+    ssao_params ssao;   // ssao.samples is taken from the variant
+    gtao_params gtao;
+    vbao_params vbao;
+    blur_params blur;
+    uniforms::camera camera;
+};
+
+// The AO target size of `v` for a G-buffer of w × h.
+inline std::pair<int, int> target_size(const variant& v, int w, int h)
+{
+    return v.half_resolution ? std::pair<int, int>{(w + 1) / 2, (h + 1) / 2} : std::pair<int, int>{w, h};
+}
+
+// The size of `v`'s output for a G-buffer of w × h: the screen's when the chain ends with
+// the depth-aware upsample pass, the AO target's otherwise.
+inline std::pair<int, int> output_size(const variant& v, int w, int h)
+{
+    return has_upsample_pass(v) ? std::pair<int, int>{w, h} : target_size(v, w, h);
+}
+
+// What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
+// target_w × target_h: each pass's std140 uniform block, the noise tile the params name
+// (4×4 for GTAO and VBAO) and, for SSAO, the kernel inside its block.
+inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
+{
+    constexpr layout::rules rules = layout::rules::std140;
+    ssao_params ssao = s.ssao;
+    ssao.samples = v.ssao_samples;
+    chain_inputs in;
+    in.noise_size = has_slices(v.tech) ? 4 : ssao.noise_size;
+    in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
+    const vec2 tsize{float(target_w), float(target_h)};
+    for (pass_kind pass : passes(v)) {
+        if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules));
+        else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size));
+        else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size));
+        else {
+            const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), ssao.samples, ssao.kernel_seed);
+            in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules));
+        }
+    }
+    return in;
+}
+
+} // namespace aogen
