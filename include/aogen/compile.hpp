@@ -304,47 +304,77 @@ inline std::string declare_highp(std::string text)
 
 // reflect() and count_instructions() are in reflect.hpp.
 
-// glslang: GLSL (any #version glslang knows, 450 intended) -> SPIR-V 1.0 for Vulkan 1.0.
-// `name` labels errors and is the file name of glslang's messages until a
-// `#line N "file"` directive changes it.
-inline std::vector<uint32_t> glsl_to_spirv(const std::string& glsl, shader_stage stage, const std::string& name)
+namespace detail {
+
+// glslang: GLSL or HLSL source -> SPIR-V 1.0 for Vulkan 1.0 (glsl_to_spirv, hlsl_to_spirv).
+inline std::vector<uint32_t> glslang_to_spirv(const std::string& source, bool hlsl, shader_stage stage, const std::string& name)
 {
-    detail::initialize_glslang();
-    const EShLanguage language = detail::glslang_stage(stage);
+    initialize_glslang();
+    const EShLanguage language = glslang_stage(stage);
     glslang::TShader shader(language);
-    const char* text = glsl.c_str();
-    const int length = static_cast<int>(glsl.size());
+    const char* text = source.c_str();
+    const int length = static_cast<int>(source.size());
     const char* file = name.c_str();
     shader.setStringsWithLengthsAndNames(&text, &length, &file, 1);
-    // #line N "file" needs this extension; enabling it for every source costs nothing
-    // (it only changes what the preprocessor accepts).
-    shader.setPreamble("#extension GL_GOOGLE_cpp_style_line_directive : enable\n");
-    shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
+    if (hlsl) {
+        shader.setEntryPoint("main");
+        // Texture2D + SamplerState pairs (SPIRV-Cross's way of writing GLSL's sampler2D)
+        // become combined image samplers again, at the texture's register.
+        shader.setTextureSamplerTransformMode(EShTexSampTransUpgradeTextureRemoveSampler);
+    } else {
+        // #line N "file" needs this extension; enabling it for every source costs nothing
+        // (it only changes what the preprocessor accepts).
+        shader.setPreamble("#extension GL_GOOGLE_cpp_style_line_directive : enable\n");
+    }
+    shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : 0));
     const std::string stage_name = to_name(stage);
-    if (!shader.parse(GetDefaultResources(), 450, false, messages))
-        throw error(name + ": glslang rejected the " + stage_name +
-                    " shader (valid: GLSL that compiles for Vulkan 1.0); glslang says:" +
-                    detail::indent_lines(shader.getInfoLog()) + detail::indent_lines(shader.getInfoDebugLog()));
+    const std::string language_name = hlsl ? "HLSL" : "GLSL";
+    if (!shader.parse(GetDefaultResources(), hlsl ? 100 : 450, false, messages))
+        throw error(name + ": glslang rejected the " + stage_name + " shader (valid: " + language_name +
+                    " that compiles for Vulkan 1.0); glslang says:" + indent_lines(shader.getInfoLog()) +
+                    indent_lines(shader.getInfoDebugLog()));
     glslang::TProgram program;
     program.addShader(&shader);
     if (!program.link(messages))
         throw error(name + ": glslang could not link the " + stage_name +
                     " shader (valid: a complete shader whose entry point is main); glslang says:" +
-                    detail::indent_lines(program.getInfoLog()) + detail::indent_lines(program.getInfoDebugLog()));
+                    indent_lines(program.getInfoLog()) + indent_lines(program.getInfoDebugLog()));
     std::vector<unsigned int> words;
     spv::SpvBuildLogger logger;
     glslang::SpvOptions spv_options;
     spv_options.generateDebugInfo = false;
-    spv_options.disableOptimizer = true; // spirv-opt runs separately, with our options
-    spv_options.validate = false;        // spirv-val runs separately, with our messages
+    // spirv-opt runs separately, with our options; HLSL needs glslang's legalization passes
+    // (textures and samplers passed to functions, HLSL's structured control flow).
+    spv_options.disableOptimizer = !hlsl;
+    spv_options.validate = false; // spirv-val runs separately, with our messages
     glslang::GlslangToSpv(*program.getIntermediate(language), words, &logger, &spv_options);
     if (words.empty())
         throw error(name + ": glslang produced no SPIR-V for the " + stage_name + " shader; glslang says:" +
-                    detail::indent_lines(logger.getAllMessages()));
+                    indent_lines(logger.getAllMessages()));
     return std::vector<uint32_t>(words.begin(), words.end());
+}
+
+} // namespace detail
+
+// glslang: GLSL (any #version glslang knows, 450 intended) -> SPIR-V 1.0 for Vulkan 1.0.
+// `name` labels errors and is the file name of glslang's messages until a
+// `#line N "file"` directive changes it.
+inline std::vector<uint32_t> glsl_to_spirv(const std::string& glsl, shader_stage stage, const std::string& name)
+{
+    return detail::glslang_to_spirv(glsl, false, stage, name);
+}
+
+// glslang's HLSL front end: HLSL (SPIRV-Cross's SM 5.0/6.0 output, entry point main) -> SPIR-V
+// 1.0 for Vulkan 1.0, registers as bindings (b0 -> 0, t1 -> 1, u4 -> 4) and each Texture2D +
+// SamplerState pair made one combined image sampler again: the round trip that runs the
+// emitted HLSL on the Vulkan harness. It checks the HLSL's meaning as glslang reads it, not
+// what DXC or FXC would compile from it.
+inline std::vector<uint32_t> hlsl_to_spirv(const std::string& hlsl, shader_stage stage, const std::string& name)
+{
+    return detail::glslang_to_spirv(hlsl, true, stage, name);
 }
 
 // spirv-val, Vulkan 1.0 rules. `step` says which module this is ("glslang's output").

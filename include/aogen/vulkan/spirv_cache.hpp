@@ -50,6 +50,14 @@ public:
         return words_.emplace(k, std::move(words)).first->second; // a concurrent twin's insert wins; both are equal
     }
 
+    // Makes `words` the SPIR-V of `s`: for sources whose text is not GLSL (the HLSL round trip
+    // compiles HLSL with compile::hlsl_to_spirv and runs it under the variant's own passes).
+    void put(const codegen::shader_source& s, std::vector<uint32_t> words)
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        words_[key{s.stage, s.glsl}] = std::move(words);
+    }
+
     // Compiles every source not yet in the cache, on up to `threads` threads.
     void compile_all(const std::vector<codegen::shader_source>& sources, unsigned threads = std::thread::hardware_concurrency())
     {
