@@ -329,7 +329,7 @@ inline std::vector<uint32_t> glslang_to_spirv(const std::string& source, bool hl
     shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : 0));
+    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl : EShMsgDefault));
     const std::string stage_name = to_name(stage);
     const std::string language_name = hlsl ? "HLSL" : "GLSL";
     if (!shader.parse(GetDefaultResources(), hlsl ? 100 : 450, false, messages))
