@@ -54,7 +54,6 @@ void compare_with_spirv(gl::api api, compile::target target, const codegen::opti
     gl::context* gl = shared_gl(api);
     if (!vk || !gl) return;
     INFO(gl->version() << " | " << gl->renderer());
-    gl->make_current();
     CHECK(gl->version().rfind(api == gl::api::opengl_es ? "OpenGL ES 3." : "4.5", 0) == 0);
     const int W = 64, H = 40;
     const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);

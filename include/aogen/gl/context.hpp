@@ -75,10 +75,17 @@ public:
     {
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("EGL", "cannot make the context current again", "valid: a live context");
     }
-    std::string version() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
-    std::string renderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
+    // GL's strings of this context (made current first: GL answers for the current one).
+    std::string version() const { return text(GL_VERSION); }
+    std::string renderer() const { return text(GL_RENDERER); }
 
 private:
+    std::string text(GLenum which) const
+    {
+        make_current();
+        return reinterpret_cast<const char*>(glGetString(which));
+    }
+
     gl::api api_;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
