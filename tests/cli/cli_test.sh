@@ -143,10 +143,12 @@ assert ao['bindings'][0]['kind'] == 'uniform_buffer' and ao['uniforms']['name'] 
 assert ao['uniforms']['size'] == 496 and ao['passes'][0]['workgroup_size'] == [8, 8, 1]
 assert [p['pass'] for p in ao['passes']] == ['ao', 'blur_x', 'blur_y', 'upsample']
 assert [p['pixels_per_invocation'] for p in ao['passes']] == [1, 1, 1, 2], 'the upsample writes 2x2 pixels per invocation'
+assert ao['verification'] == {'spv': 'executed', 'glsl': 'executed', 'hlsl': 'round_tripped', 'hlsl60': 'round_tripped', 'msl': 'validated', 'msl_ios': 'validated'}, ao['verification']
 fs = m['variants'][1]
 assert [(p['pass'], p['stage']) for p in fs['passes']] == [('ao', 'vertex'), ('ao', 'fragment'), ('blur_box', 'vertex'), ('blur_box', 'fragment')]
 assert not any(b['binding'] == 2 for b in fs['bindings']), 'reconstructed normals declare no normal buffer'
 assert any(f['feature'] == 'normal buffer input' for f in fs['left_out'])
+assert fs['verification']['glsl'] == 'validated' and fs['verification']['hlsl'] == 'validated', 'fragment passes are not run on GL or through HLSL yet'
 assert 'quality' not in ao and 'quality' not in fs, 'SSAO and GTAO 2x3 match no quality preset'
 "
   "$aogen" generate --quiet --out "$work/q" --targets spv gtao-3x3-half-bilateral-gbufworld-std-persp-cs
