@@ -138,14 +138,9 @@ ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_
 
 float ao_pass(ivec2 target_pixel)
 {
-    ivec2 p = ao_full_pixel(target_pixel);
-    float depth = ao_load_depth(p);
-    if (ao_is_background(depth)) return 1.0;
-    vec3 P = ao_view_position(ao_pixel_uv(p), depth);
-    if (!ao_is_finite(P)) return 1.0;
-    vec3 V = ao_view_direction(P);
-    vec3 n;
-    if (!ao_surface_normal(p, P, V, n)) return 1.0;
+    ivec2 p;
+    vec3 P, V, n;
+    if (!ao_slice_centre(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
 
     // The search radius on screen, capped at half its height, and the world radius the cap
     // leaves, which bounds the horizon search as u.radius does (common/slices.glsl).

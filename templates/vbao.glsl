@@ -171,14 +171,9 @@ uint ao_vbao_sample(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, vec3 normal, f
 
 float ao_pass(ivec2 target_pixel)
 {
-    ivec2 p = ao_full_pixel(target_pixel);
-    float depth = ao_load_depth(p);
-    if (ao_is_background(depth)) return 1.0;
-    vec3 P = ao_view_position(ao_pixel_uv(p), depth);
-    if (!ao_is_finite(P)) return 1.0;
-    vec3 V = ao_view_direction(P);
-    vec3 n;
-    if (!ao_surface_normal(p, P, V, n)) return 1.0;
+    ivec2 p;
+    vec3 P, V, n;
+    if (!ao_slice_centre(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
 
     // The search radius on screen and the world radius its cap leaves (common/slices.glsl,
     // as gtao.glsl): the latter bounds the samples' distance.

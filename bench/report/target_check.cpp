@@ -17,7 +17,7 @@
 #include <aogen/compile.hpp>
 #include <aogen/gl/chain.hpp>
 #include <aogen/matrix.hpp>
-#include <aogen/vulkan/spirv_cache.hpp>
+#include <aogen/vulkan/hlsl_round_trip.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -97,16 +97,9 @@ int main(int argc, char** argv)
                 got[0] = aogen::gl::run(gl, v, texts(v, aogen::compile::target::glsl, {}), gbuffers.host(v), in).ao;
                 got[1] = aogen::gl::run(es, v, texts(v, aogen::compile::target::essl, rgba8), gbuffers.host(v), in, rgba8).ao;
                 const aogen::compile::target hlsl[2] = {aogen::compile::target::hlsl50, aogen::compile::target::hlsl60};
-                for (int k = 0; k < 2; ++k) {
-                    aogen::vulkan::spirv_cache cache;
-                    std::vector<aogen::codegen::shader_source> sources = aogen::codegen::generate(v);
-                    for (aogen::codegen::shader_source& src : sources) {
-                        src.glsl = aogen::compile::compile(src.glsl, src.stage, src.name, {hlsl[k]}).text.at(hlsl[k]);
-                        cache.put(src, aogen::compile::hlsl_to_spirv(src.glsl, src.stage, src.name));
-                    }
-                    const aogen::vulkan::pass_pipelines passes(vk, name + " (HLSL)", v.stage, v.workgroup_x, v.workgroup_y, sources, &cache);
-                    got[2 + k] = aogen::vulkan::bound_chain(vk, passes, gbuffers.gpu(v), in, tw, th).run_once().ao;
-                }
+                for (int k = 0; k < 2; ++k)
+                    got[2 + k] =
+                        aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, v, hlsl[k]), gbuffers.gpu(v), in, tw, th).run_once().ao;
                 for (int k = 0; k < 4; ++k) {
                     const float d = difference(got[k], expected);
                     ++t[k].runs, t[k].exact += d == 0.0f, t[k].over += d > 1.0f / 255 + 1e-6f;

@@ -1,13 +1,12 @@
 // The emitted HLSL round-tripped: each compute pass's SM 5.0 and SM 6.0 HLSL (SPIRV-Cross's,
 // as `aogen generate` writes it) compiled back to SPIR-V by glslang's HLSL front end
-// (compile::hlsl_to_spirv) and run under the variant's own passes on the Vulkan harness,
+// (vulkan::hlsl_round_trip) and run under the variant's own passes on the Vulkan harness,
 // against the variant's SPIR-V on the same inputs: every pixel within 1/255. This checks the
 // HLSL's meaning as glslang reads it (bindings from registers, the cbuffer's packing, the
 // texture/sampler pairs, the arithmetic), not what DXC or FXC would compile from it.
 #include "harness.hpp"
 
-#include <aogen/compile.hpp>
-#include <aogen/vulkan/spirv_cache.hpp>
+#include <aogen/vulkan/hlsl_round_trip.hpp>
 
 #include <iostream>
 
@@ -30,17 +29,9 @@ TEST_CASE("vulkan: the emitted HLSL (SM 5.0, 6.0) round-tripped through glslang 
                                  "vbao-3x3-half-bilateral-gbufworld-std-persp-cs", "ssao-s64-full-noblur-recon-std-persp-cs-pc-rc004"}) {
             const variant v = variant_from_name(name);
             INFO(compile::to_name(target) << " " << name);
-            // The variant's passes, each with its HLSL compiled back to SPIR-V as its code.
-            vulkan::spirv_cache cache;
-            std::vector<codegen::shader_source> sources = codegen::generate(v);
-            for (codegen::shader_source& src : sources) {
-                const std::string hlsl = compile::compile(src.glsl, src.stage, src.name, {target}).text.at(target);
-                src.glsl = hlsl; // the cache's key: this pass's text is now the HLSL
-                cache.put(src, compile::hlsl_to_spirv(hlsl, src.stage, src.name + "." + compile::to_name(target)));
-            }
-            const vulkan::pass_pipelines round_trip(*ctx, std::string(name) + " (HLSL)", v.stage, v.workgroup_x, v.workgroup_y, sources, &cache);
+            const std::unique_ptr<vulkan::pass_pipelines> round_trip = vulkan::hlsl_round_trip(*ctx, v, target);
             const auto [tw, th] = target_size(v, W, H);
-            const vulkan::chain_result got = vulkan::bound_chain(*ctx, round_trip, g, inputs_for(v, s, tw, th), tw, th).run_once();
+            const vulkan::chain_result got = vulkan::bound_chain(*ctx, *round_trip, g, inputs_for(v, s, tw, th), tw, th).run_once();
             const vulkan::chain_result expected = vulkan::chain(*ctx, v).run(host, s);
             REQUIRE(got.width == expected.width);
             REQUIRE(got.ao.size() == expected.ao.size());

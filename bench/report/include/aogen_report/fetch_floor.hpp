@@ -53,8 +53,8 @@ inline std::string floor_replacement_file(const std::string& name, const std::st
 // The fetch-only file that stands in for aogen template `path`, or "" when it is kept.
 inline std::string floor_replacement(const std::string& path)
 {
-    const std::array<const char*, 8> replaced{"common/normals.glsl", "ssao.glsl",     "gtao.glsl",         "vbao.glsl",
-                                              "blur_bilateral.glsl", "blur_box.glsl", "blur_denoise.glsl", "upsample.glsl"};
+    const std::array<const char*, 9> replaced{"common/normals.glsl", "common/slices.glsl", "ssao.glsl",         "gtao.glsl",    "vbao.glsl",
+                                              "blur_bilateral.glsl", "blur_box.glsl",      "blur_denoise.glsl", "upsample.glsl"};
     if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
     // VBAO fetches what GTAO fetches (the same slices and steps): floor/vbao.glsl renames the
     // counts, then floor/gtao.glsl's loop follows.

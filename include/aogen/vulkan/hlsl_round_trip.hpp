@@ -1,0 +1,35 @@
+// aogen/vulkan/hlsl_round_trip.hpp — a variant's passes built from its emitted HLSL compiled
+// back to SPIR-V, to run its HLSL on the Vulkan harness (issue 13's round trip).
+//
+//     std::unique_ptr<aogen::vulkan::pass_pipelines> p =
+//         aogen::vulkan::hlsl_round_trip(ctx, v, aogen::compile::target::hlsl60);
+//     aogen::vulkan::bound_chain(ctx, *p, g, inputs, tw, th).run_once();   // as the variant's own
+//
+// Each pass's GLSL goes to `target` (hlsl50 or hlsl60) through compile.hpp, as `aogen generate`
+// writes it, and back to SPIR-V through compile::hlsl_to_spirv (glslang's HLSL front end); the
+// passes keep the variant's resources, so they bind and run like its SPIR-V. What it checks:
+// the HLSL's meaning as glslang reads it, not DXC's or FXC's code generation.
+#pragma once
+
+#include "../compile.hpp"
+#include "passes.hpp"
+
+#include <memory>
+
+namespace aogen::vulkan {
+
+inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const variant& v, compile::target target)
+{
+    if (target != compile::target::hlsl50 && target != compile::target::hlsl60)
+        fail("hlsl round trip target", compile::to_name(target), "valid: hlsl, hlsl60");
+    spirv_cache cache;
+    std::vector<codegen::shader_source> sources = codegen::generate(v);
+    for (codegen::shader_source& s : sources) {
+        s.glsl = compile::compile(s.glsl, s.stage, s.name, {target}).text.at(target); // the cache's key: the pass's text is the HLSL now
+        cache.put(s, compile::hlsl_to_spirv(s.glsl, s.stage, s.name + "." + compile::to_name(target)));
+    }
+    return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (" + compile::to_name(target) + " round trip)", v.stage, v.workgroup_x,
+                                            v.workgroup_y, sources, &cache);
+}
+
+} // namespace aogen::vulkan
