@@ -118,7 +118,7 @@ float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float ma
     if (!(true_length > 1e-30 && distance <= max_distance)) return unoccluded; // NaN and inf fail too
     float fade_length = u.falloff_range * max_distance;
     float weight = fade_length > 0.0 ? clamp((max_distance - distance) / fade_length, 0.0, 1.0) : 1.0;
-    return mix(unoccluded, along_view / true_length, weight);
+    return ao_lerp(unoccluded, along_view / true_length, weight);
 }
 
 // The slice integral a(h-, n) + a(h+, n), without the |n_p| factor, from the horizon

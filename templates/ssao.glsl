@@ -148,6 +148,6 @@ float ao_pass(ivec2 target_pixel)
 #else
     float visibility = 1.0 - occluded;
     float ao = visibility > 0.0 ? pow(visibility, u.power) : 0.0;
-    return clamp(mix(1.0, ao, u.intensity), 0.0, 1.0);
+    return clamp(ao_lerp(1.0, ao, u.intensity), 0.0, 1.0);
 #endif
 }

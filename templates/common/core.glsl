@@ -92,6 +92,20 @@ vec3 ao_safe_normalize(vec3 v, vec3 fallback)
     return v * inversesqrt(dot(v, v)); // dot(v, v) is in [1, 3]
 }
 
+// ---- arithmetic every target evaluates alike -----------------------------------------------
+
+// a + (b - a) t: GLSL's mix(a, b, t), written out. Why not mix: Mesa lowers mix to plain
+// arithmetic in one of two forms, a + t (b - a) or a (1 - t) + b t, chosen by looking at the
+// other mixes in the shader, and its GLSL and SPIR-V front ends hand it differently shaped
+// shaders. The same text then interpolated a depth one ulp apart on OpenGL and on Vulkan, and
+// a sample exactly at its occlusion threshold flipped: a whole SSAO vote (31/255 at 8
+// samples) or a VBAO sector (issue 13's target check). Written out, every target computes the
+// same operations.
+float ao_lerp(float a, float b, float t)
+{
+    return a + (b - a) * t;
+}
+
 // What a pass writes: finite and in [0, 1]. Anything else (a NaN from input the guards
 // did not foresee) becomes 1, no occlusion.
 float ao_finalize(float ao)

@@ -141,7 +141,7 @@ bool ao_depth_at(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
     float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
     float planarity = abs(d00 + d11 - d10 - d01);
     if (planarity > 0.25 * spread + 2.5e-7 * abs(d00)) return true; // not one plane
-    depth = mix(mix(d00, d10, f.x), mix(d01, d11, f.x), f.y);
+    depth = ao_lerp(ao_lerp(d00, d10, f.x), ao_lerp(d01, d11, f.x), f.y);
     at = pos;
     return true;
 }
