@@ -131,8 +131,8 @@ ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_
     ao_half c_ahead = ao_is_finite(float(cos_ahead)) ? clamp(cos_ahead, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
     ao_half c_behind = ao_is_finite(float(cos_behind)) ? clamp(cos_behind, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
     // h+ in [0, pi], h- in [-pi, 0]; the clamp keeps h- <= 0 <= h+, as n +- pi/2 straddle 0.
-    ao_half h_ahead = clamp(acos(c_ahead), n - half_pi, n + half_pi);
-    ao_half h_behind = clamp(-acos(c_behind), n - half_pi, n + half_pi);
+    ao_half h_ahead = clamp(ao_acos(c_ahead), n - half_pi, n + half_pi);
+    ao_half h_behind = clamp(-ao_acos(c_behind), n - half_pi, n + half_pi);
     return ao_slice_arc(h_behind, n) + ao_slice_arc(h_ahead, n);
 }
 

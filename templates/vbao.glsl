@@ -114,10 +114,26 @@ uint ao_vbao_sectors(ao_half theta_a, ao_half theta_b, ao_half n)
     return ao_vbao_sectors_below(end) & ~ao_vbao_sectors_below(first);
 }
 
+// The number of set bits of `mask`. Fragment passes also go to ESSL 3.00 (OpenGL ES 3.0,
+// WebGL 2), which has no bitCount, so there the bits are summed in parallel: in pairs, then
+// nibbles, then bytes, and a multiply adds the four byte counts into the top byte. Compute
+// passes go to ESSL 3.10 at the lowest, which has bitCount.
+uint ao_vbao_bit_count(uint mask)
+{
+#if defined(AO_STAGE_FRAGMENT)
+    uint pairs = mask - ((mask >> 1u) & 0x55555555u);
+    uint nibbles = (pairs & 0x33333333u) + ((pairs >> 2u) & 0x33333333u);
+    uint bytes = (nibbles + (nibbles >> 4u)) & 0x0f0f0f0fu;
+    return (bytes * 0x01010101u) >> 24u;
+#else
+    return uint(bitCount(mask));
+#endif
+}
+
 // The unmarked share of a slice's sectors, 1 - popcount / 32.
 ao_half ao_vbao_slice_visible(uint occluded)
 {
-    return ao_half(1.0) - ao_half(bitCount(occluded)) / ao_half(AO_VBAO_SECTORS);
+    return ao_half(1.0) - ao_half(ao_vbao_bit_count(occluded)) / ao_half(AO_VBAO_SECTORS);
 }
 
 // The signed angle from V of the direction from P to view-space point X, on the side
@@ -130,7 +146,7 @@ bool ao_vbao_angle(vec3 X, vec3 P, vec3 V, float toward, out ao_half theta)
     if (!(distance > 1e-30 && ao_is_finite(distance))) return false;
     float c = dot(w, V) / distance;
     if (!(c >= -1.0 && c <= 1.0)) c = clamp(c, -1.0, 1.0); // rounding past +-1; NaN was excluded above
-    theta = ao_half(toward) * ao_half(acos(c));
+    theta = ao_half(toward) * ao_half(ao_acos(c));
     return true;
 }
 

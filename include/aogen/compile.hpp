@@ -306,16 +306,26 @@ inline std::string declare_highp(std::string text)
 
 namespace detail {
 
+// One source string for a glslang::TShader, named `name` in its messages. The shader keeps
+// pointers to these fields, so this must outlive its parse.
+struct glslang_source {
+    const char* text;
+    int length;
+    const char* file;
+    glslang_source(const std::string& source, const std::string& name)
+        : text(source.c_str()), length(static_cast<int>(source.size())), file(name.c_str())
+    {
+    }
+};
+
 // glslang: GLSL or HLSL source -> SPIR-V 1.0 for Vulkan 1.0 (glsl_to_spirv, hlsl_to_spirv).
 inline std::vector<uint32_t> glslang_to_spirv(const std::string& source, bool hlsl, shader_stage stage, const std::string& name)
 {
     initialize_glslang();
     const EShLanguage language = glslang_stage(stage);
     glslang::TShader shader(language);
-    const char* text = source.c_str();
-    const int length = static_cast<int>(source.size());
-    const char* file = name.c_str();
-    shader.setStringsWithLengthsAndNames(&text, &length, &file, 1);
+    const glslang_source input(source, name);
+    shader.setStringsWithLengthsAndNames(&input.text, &input.length, &input.file, 1);
     if (hlsl) {
         shader.setEntryPoint("main");
         // Texture2D + SamplerState pairs (SPIRV-Cross's way of writing GLSL's sampler2D)
@@ -355,6 +365,29 @@ inline std::vector<uint32_t> glslang_to_spirv(const std::string& source, bool hl
         throw error(name + ": glslang produced no SPIR-V for the " + stage_name + " shader; glslang says:" +
                     indent_lines(logger.getAllMessages()));
     return std::vector<uint32_t>(words.begin(), words.end());
+}
+
+// glslang as an OpenGL / OpenGL ES compiler front end: `text` (SPIRV-Cross's GLSL 450 or
+// ESSL 310/300, its #version line first) parsed and linked under its own version's rules, no
+// SPIR-V rules. It catches what SPIRV-Cross writes that the version lacks -- bitCount in ESSL
+// 3.00, say -- before a file is written, not on the user's device.
+inline void validate_gl_text(const std::string& source, shader_stage stage, const std::string& version_name, const std::string& name)
+{
+    initialize_glslang();
+    const EShLanguage language = glslang_stage(stage);
+    glslang::TShader shader(language);
+    const glslang_source input(source, name);
+    shader.setStringsWithLengthsAndNames(&input.text, &input.length, &input.file, 1);
+    const std::string stage_name = to_name(stage);
+    if (!shader.parse(GetDefaultResources(), 100, false, EShMsgDefault))
+        throw error(name + ": SPIRV-Cross's " + version_name + " " + stage_name + " shader does not compile as " + version_name +
+                    " (valid: what that version has; a template feature it lacks needs another form there); glslang says:" +
+                    indent_lines(shader.getInfoLog()));
+    glslang::TProgram program;
+    program.addShader(&shader);
+    if (!program.link(EShMsgDefault))
+        throw error(name + ": SPIRV-Cross's " + version_name + " " + stage_name + " shader does not link; glslang says:" +
+                    indent_lines(program.getInfoLog()));
 }
 
 } // namespace detail
@@ -487,6 +520,7 @@ inline std::string cross_compile(const std::vector<uint32_t>& spirv, shader_stag
             }
             std::string text = glsl.compile();
             if (o.es) text = detail::declare_highp(std::move(text));
+            detail::validate_gl_text(text, stage, (o.es ? "ESSL " : "GLSL ") + std::to_string(o.version), name);
             if (entry_point) *entry_point = "main";
             return text;
         }

@@ -106,6 +106,65 @@ float ao_lerp(float a, float b, float t)
     return a + (b - a) * t;
 }
 
+// acos and atan, written out for the same reason: Mesa's GLSL front end builds them from its
+// own GLSL built-in library and its SPIR-V front end from NIR's, two polynomials that differ
+// in the last bits (a GTAO pixel came out 1/255 apart on GL and on Vulkan). Polynomials fitted
+// for aogen (near-minimax, iteratively reweighted least squares in double precision); the
+// error of the exact polynomial is below 1.3e-8 rad for acos and 6e-9 rad for atan, under the
+// 1.2e-7 a float has at pi/2, so in float they are as good as a driver's own.
+
+// acos(x), x in [-1, 1]: acos(a) = sqrt(1 - a) P(a) on [0, 1], and acos(-a) = pi - acos(a).
+float ao_acos(float x)
+{
+    float a = min(abs(x), 1.0);
+    float p = -0.0014411922;
+    p = p * a + 0.0072444812;
+    p = p * a - 0.0178077109;
+    p = p * a + 0.0313346423;
+    p = p * a - 0.0503125079;
+    p = p * a + 0.0889992192;
+    p = p * a - 0.2145998925;
+    p = p * a + 1.5707963705;
+    float r = sqrt(1.0 - a) * p;
+    return mix(r, AO_PI - r, x < 0.0); // a select
+}
+
+// atan(y, x) in [-pi, pi]: t = min(|x|, |y|) / max(|x|, |y|) in [0, 1], atan t = t Q(t^2),
+// then the octant: pi/2 - r above the diagonal, pi - r for x < 0, and y's sign. 0 at the
+// origin; the divisor is at least 1e-30, so only points closer to it than that lose accuracy.
+float ao_atan2(float y, float x)
+{
+    float ax = abs(x), ay = abs(y);
+    float t = min(ax, ay) / max(max(ax, ay), 1e-30);
+    float t2 = t * t;
+    float q = 0.0024461593;
+    q = q * t2 - 0.0143560125;
+    q = q * t2 + 0.0397009812;
+    q = q * t2 - 0.0722731128;
+    q = q * t2 + 0.1049489677;
+    q = q * t2 - 0.1415999383;
+    q = q * t2 + 0.1998570710;
+    q = q * t2 - 0.3333258331;
+    q = q * t2 + 0.9999998808;
+    float r = t * q;
+    // mix with a bool is a select (no branch, nothing interpolated)
+    r = mix(r, AO_HALF_PI - r, ay > ax);
+    r = mix(r, AO_PI - r, x < 0.0);
+    return mix(r, -r, y < 0.0);
+}
+
+#if defined(AO_FP16)
+// The 16-bit forms evaluate in 32 bits: the same operations on every target.
+ao_half ao_acos(ao_half x)
+{
+    return ao_half(ao_acos(float(x)));
+}
+ao_half ao_atan2(ao_half y, ao_half x)
+{
+    return ao_half(ao_atan2(float(y), float(x)));
+}
+#endif
+
 // What a pass writes: finite and in [0, 1]. Anything else (a NaN from input the guards
 // did not foresee) becomes 1, no occlusion.
 float ao_finalize(float ao)

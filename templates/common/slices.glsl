@@ -70,7 +70,7 @@ ao_half2 ao_slice_projected_normal(vec3 n, vec3 V, vec3 side)
     float n_length = sqrt(x * x + y * y);
     if (!(n_length > 1e-6)) return ao_half2(0.0);
     // atan(y, x) is undefined at x = 0 = y; x <= 0 (rounding) is a normal in the view plane.
-    ao_half n_angle = x > 0.0 ? atan(ao_half(y), ao_half(x)) : ao_half(y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
+    ao_half n_angle = x > 0.0 ? ao_atan2(ao_half(y), ao_half(x)) : ao_half(y < 0.0 ? -AO_HALF_PI : AO_HALF_PI);
     return ao_half2(n_length, clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI)));
 }
 

@@ -192,6 +192,7 @@ inline std::vector<float> run_main(const std::vector<uint32_t>& words, size_t co
             case GLSLstd450UMin: values[w[2]] = imap2(a, w[6], [](uint32_t x, uint32_t y) { return std::min(x, y); }); break;
             case GLSLstd450UMax: values[w[2]] = imap2(a, w[6], [](uint32_t x, uint32_t y) { return std::max(x, y); }); break;
             case GLSLstd450Floor: values[w[2]] = map(a, [](float x) { return std::floor(x); }); break;
+            case GLSLstd450FAbs: values[w[2]] = map(a, [](float x) { return std::fabs(x); }); break;
             case GLSLstd450FSign: values[w[2]] = map(a, [](float x) { return float(x > 0) - float(x < 0); }); break;
             case GLSLstd450FClamp: {
                 const std::vector<double> lo = value(w[6]), hi = value(w[7]);

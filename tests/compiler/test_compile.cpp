@@ -469,6 +469,21 @@ TEST_CASE("compile: essl refuses a desktop-only image format by name", "[compile
     CHECK(e.rfind("ssao-s16 ao: essl: storage image ao_out: format r8 does not exist in OpenGL ES (valid in ESSL 3.10: rgba32f, ", 0) == 0);
 }
 
+TEST_CASE("compile: a GLSL/ESSL text using what its version lacks is refused, naming the shader", "[compile]")
+{
+    // bitCount exists in GLSL 4.00 and ESSL 3.10, not in ESSL 3.00 (fragment shaders' ESSL).
+    const char* const source = R"(#version 450
+layout(location = 0) out float ao;
+layout(std140, set = 0, binding = 0) uniform Mask { uint bits; } m;
+void main() { ao = float(bitCount(m.bits)) / 32.0; }
+)";
+    const cc::compiled glsl = cc::compile(source, cc::shader_stage::fragment, "vbao ao", {cc::target::glsl});
+    CHECK(glsl.text.at(cc::target::glsl).find("bitCount") != std::string::npos);
+    const std::string e = error_of([&] { cc::compile(source, cc::shader_stage::fragment, "vbao ao", {cc::target::essl}); });
+    CHECK(e.rfind("vbao ao: SPIRV-Cross's ESSL 300 fragment shader does not compile as ESSL 300 (valid: ", 0) == 0);
+    CHECK_THAT(e, Contains("'bitCount' : no matching overloaded function found"));
+}
+
 TEST_CASE("compile: fragment shader with a separate texture and sampler, re-validated", "[compile]")
 {
     const cc::compiled out = cc::compile(fragment_source, cc::shader_stage::fragment, "test fragment", cc::all_targets);

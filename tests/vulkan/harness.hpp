@@ -26,6 +26,32 @@ namespace aogen_test {
 
 using namespace aogen;
 
+// The variants whose emitted texts the gl: and HLSL round-trip tests run against their SPIR-V.
+// Ten compute variants: SSAO, GTAO, VBAO; every blur; half and full resolution, with and
+// without the upsample; view-space and reconstructed normals; the point-cloud fallback. Two
+// of them are where a depth interpolated with GLSL's mix() came out one ulp apart on GL and
+// on Vulkan and flipped an SSAO vote (8/255) and a VBAO sector (4/255): common/core.glsl's
+// ao_lerp. Then fragment variants: the seeds' four (the default matrix's fragment variants)
+// and three with the upsample, the denoise and VBAO, drawn as fullscreen triangles.
+inline const char* const emitted_target_variants[] = {
+    "ssao-s16-half-bilateral-gbufworld-std-persp-cs",
+    "ssao-s8-full-box-recon-std-persp-cs",
+    "gtao-2x3-half-bilateral-gbufworld-std-persp-cs",
+    "gtao-4x4-full-denoise-gbufview-std-persp-cs",
+    "gtao-2x2-half-denoise-gbufworld-std-persp-cs",
+    "gtao-1x2-half-noblur-gbufworld-std-persp-cs-nearest",
+    "vbao-3x3-half-bilateral-gbufworld-std-persp-cs",
+    "ssao-s64-full-noblur-recon-std-persp-cs-pc-rc004",
+    "ssao-s32-full-noblur-gbufworld-std-persp-cs",
+    "vbao-1x2-half-bilateral-gbufworld-std-persp-cs",
+    "ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest",
+    "gtao-2x3-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest",
+    "ssao-s32-half-bilateral-gbufview-std-persp-fs-powint-nearest",
+    "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004",
+    "ssao-s16-half-bilateral-gbufworld-std-persp-fs",
+    "gtao-2x3-half-denoise-gbufworld-std-persp-fs",
+    "vbao-2x2-full-box-recon-std-persp-fs"};
+
 // One validated context for the whole run (lavapipe's start-up is not free). Without a
 // device each test fails, or, with AOGEN_TESTS_OPTIONAL_DEPS=1 (support.hpp), gets null
 // and returns.

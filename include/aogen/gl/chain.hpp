@@ -1,29 +1,39 @@
-// aogen/gl/chain.hpp — a variant's compute chain run from its emitted GLSL 450 on OpenGL 4.5,
-// or its ESSL 310 on OpenGL ES 3.2 (aogen/gl/context.hpp), on the same bytes the Vulkan
-// harness uploads (aogen/chain_inputs.hpp).
+// aogen/gl/chain.hpp — a variant's chain run from its emitted GLSL 450 on OpenGL 4.5, or its
+// ESSL (310 compute, 300 fragment) on OpenGL ES 3.2 (aogen/gl/context.hpp), on the same bytes
+// the Vulkan harness uploads (aogen/chain_inputs.hpp).
 //
 // WHAT
-//   run(ctx, v, glsl, g, in, o) compiles each pass's text (SPIRV-Cross's GLSL 450 or ESSL 310
-//   output of codegen::generate(v, o): one compute shader per pass of passes(v), in order;
-//   ESSL needs o.output_format rgba8), uploads the
-//   G-buffer (depth R32F, normals RGBA32F), the noise tile (RGBA32F) and each pass's std140
-//   uniform block, binds every resource codegen::resources() lists at its binding (GL keeps
-//   the numbers: uniform blocks, texture units and image units each have their own), runs
-//   the passes with a memory barrier between them and reads the last output back as floats
-//   k / 255. Outputs are R8 (or RGBA8) images: the AO target's size, the screen's for the upsample;
-//   compute passes are dispatched over their output size / pixels_per_invocation.
+//   run(ctx, v, texts, g, in, o) compiles each pass's texts (SPIRV-Cross's GLSL 450 or ESSL
+//   output of codegen::generate(v, o), one text per shader it returns, in its order: per pass
+//   of passes(v), a compute shader, or a vertex and a fragment shader; ESSL compute needs
+//   o.output_format rgba8), uploads the G-buffer (depth R32F, normals RGBA32F), the noise tile
+//   (RGBA32F) and each pass's std140 uniform block, binds every resource codegen::resources()
+//   lists at its binding, runs the passes in order and reads the last output back as floats
+//   k / 255.
+//   Bindings: GLSL 450 and ESSL 310 carry them in the text (uniform blocks, texture units and
+//   image units each have their own numbers), and the runner binds there. ESSL 300 has no
+//   binding qualifiers, so for those texts the runner does what an application must: it
+//   gives each uniform block (by its block name) and each sampler (u_<resource name>, as the
+//   templates declare them) the manifest's binding number.
+//   Compute passes write R8 (or RGBA8) images, dispatched over their output size /
+//   pixels_per_invocation, with a memory barrier between passes. Fragment passes draw the
+//   fullscreen triangle (3 vertices, no buffers) into an R8 texture through a framebuffer,
+//   the viewport the output's size, dithering off. Output sizes: the AO target's, the
+//   screen's for the upsample. GL's window origin is the lower left, Vulkan's the upper left,
+//   but both write window row k to texture row k and read texel row k there, so
+//   ivec2(gl_FragCoord.xy) names the same texel on both.
 //   Samplers: nearest, clamp-to-edge (depth, normals, AO input) and repeat (noise), as the
 //   Vulkan harness's.
 //
 // USAGE
 //     aogen::gl::context gl;
-//     std::vector<std::string> glsl = ...;   // compile::compile(s.glsl, ..., {target::glsl}).text
-//     aogen::gl::chain_result r = aogen::gl::run(gl, v, glsl, g, aogen::inputs_for(v, s, tw, th));
+//     std::vector<std::string> texts = ...;   // compile::compile(s.glsl, ..., {target::glsl}).text
+//     aogen::gl::chain_result r = aogen::gl::run(gl, v, texts, g, aogen::inputs_for(v, s, tw, th));
 //
 // ERRORS
-//   aogen::error: a fragment variant (not run here yet), a text count other than the pass
-//   count, a GLSL compile or link error (with GL's log), a G-buffer of the wrong size, a pass
-//   reading normals the G-buffer does not have.
+//   aogen::error: a text count other than the shader count, a GLSL compile or link error (with
+//   GL's log), a G-buffer of the wrong size, a pass reading normals the G-buffer does not have,
+//   a diagnostics build (its raw image is not run here).
 #pragma once
 
 #include "../chain_inputs.hpp"
@@ -46,6 +56,7 @@ namespace detail {
 // The GL objects one run makes, deleted when it ends.
 struct objects {
     std::vector<GLuint> textures, buffers, samplers, programs;
+    GLuint framebuffer_ = 0, vertex_array_ = 0;
     objects() = default;
     objects(const objects&) = delete;
     objects& operator=(const objects&) = delete;
@@ -55,6 +66,8 @@ struct objects {
         glDeleteBuffers(GLsizei(buffers.size()), buffers.data());
         glDeleteSamplers(GLsizei(samplers.size()), samplers.data());
         for (GLuint p : programs) glDeleteProgram(p);
+        if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+        if (vertex_array_) glDeleteVertexArrays(1, &vertex_array_);
     }
 
     // The calls below are OpenGL 4.5's and OpenGL ES 3.1's both (no direct state access).
@@ -89,27 +102,41 @@ struct objects {
         glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(bytes.size()), bytes.data(), GL_STATIC_DRAW);
         return b;
     }
-    GLuint program(const std::string& glsl, const std::string& name)
+    // The program of one pass from its shaders' texts: {compute} or {vertex, fragment}.
+    GLuint program(const std::vector<std::pair<GLenum, const std::string*>>& shaders, const std::string& name)
     {
-        const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-        const char* text = glsl.c_str();
-        glShaderSource(shader, 1, &text, nullptr);
-        glCompileShader(shader);
-        GLint ok = 0;
-        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
-            glDeleteShader(shader);
-            fail("gl " + name, "does not compile: " + log, "valid: GLSL 450 or ESSL 310 as compile.hpp's glsl and essl targets write them");
-        }
         const GLuint p = glCreateProgram();
         programs.push_back(p);
-        glAttachShader(p, shader);
+        for (const auto& [stage, glsl] : shaders) {
+            const GLuint shader = glCreateShader(stage);
+            const char* text = glsl->c_str();
+            glShaderSource(shader, 1, &text, nullptr);
+            glCompileShader(shader);
+            GLint ok = 0;
+            glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+            if (!ok) {
+                const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
+                glDeleteShader(shader);
+                fail("gl " + name, "does not compile: " + log, "valid: GLSL 450 or ESSL 310/300 as compile.hpp's glsl and essl targets write them");
+            }
+            glAttachShader(p, shader);
+            glDeleteShader(shader); // freed with the program
+        }
         glLinkProgram(p);
-        glDeleteShader(shader);
+        GLint ok = 0;
         glGetProgramiv(p, GL_LINK_STATUS, &ok);
-        if (!ok) fail("gl " + name, "does not link: " + info_log(p, glGetProgramiv, glGetProgramInfoLog), "valid: one compute shader");
+        if (!ok) fail("gl " + name, "does not link: " + info_log(p, glGetProgramiv, glGetProgramInfoLog), "valid: one pass's shaders");
         return p;
+    }
+    GLuint framebuffer()
+    {
+        if (!framebuffer_) glGenFramebuffers(1, &framebuffer_);
+        return framebuffer_;
+    }
+    GLuint vertex_array() // core profiles draw only with one bound, even without attributes
+    {
+        if (!vertex_array_) glGenVertexArrays(1, &vertex_array_);
+        return vertex_array_;
     }
 
 private:
@@ -155,33 +182,102 @@ inline GLenum image_format(const std::string& output_format)
     fail("gl chain output format", quote(output_format) + " is not run here", "valid: r8, rgba8");
 }
 
+// ESSL 3.00 has no binding qualifiers (GLSL 450 and ESSL 310 do).
+inline bool has_binding_qualifiers(const std::string& text)
+{
+    return text.rfind("#version 300 es", 0) != 0;
+}
+
+// What an ESSL 300 application does in place of binding qualifiers: each uniform block by
+// its block name and each sampler (u_<name>, as the templates declare them) to its binding.
+// `p` must be in use (glUniform1i sets the current program's uniforms).
+inline void bind_by_name(GLuint p, const std::vector<codegen::resource>& resources)
+{
+    for (const codegen::resource& r : resources) {
+        if (r.kind == codegen::resource_kind::uniform_buffer) {
+            const GLuint block = glGetUniformBlockIndex(p, r.block.c_str());
+            if (block != GL_INVALID_INDEX) glUniformBlockBinding(p, block, r.binding);
+        } else if (r.kind == codegen::resource_kind::combined_image_sampler) {
+            const GLint location = glGetUniformLocation(p, ("u_" + r.name).c_str());
+            if (location >= 0) glUniform1i(location, GLint(r.binding));
+        }
+    }
+}
+
+// The G-buffer, noise and samplers every pass reads, uploaded once.
+struct chain_textures {
+    GLuint depth = 0, normals = 0, noise = 0, clamp = 0, repeat = 0;
+};
+
+// Binds `resources` of pass `name` at their bindings: its uniform block (bytes `uniforms`),
+// the chain's textures, the previous pass's output `previous` and, for compute, `output`.
+inline void bind_resources(objects& gl, const std::vector<codegen::resource>& resources, const std::string& name, const std::vector<uint8_t>& uniforms,
+                           const chain_textures& t, GLuint previous, GLuint output, GLenum format)
+{
+    for (const codegen::resource& r : resources) {
+        const GLuint unit = r.binding;
+        if (r.kind == codegen::resource_kind::uniform_buffer) {
+            glBindBufferBase(GL_UNIFORM_BUFFER, unit, gl.uniform_buffer(uniforms));
+        } else if (r.kind == codegen::resource_kind::storage_image) {
+            if (r.name != "output") fail("gl " + name, "binds storage image '" + r.name + "'", "valid: output (no diagnostics on GL)");
+            glBindImageTexture(unit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+        } else {
+            GLuint texture = 0, sampler = t.clamp;
+            if (r.name == "depth") texture = t.depth;
+            else if (r.name == "normals") texture = t.normals;
+            else if (r.name == "noise") texture = t.noise, sampler = t.repeat;
+            else if (r.name == "ao_input") texture = previous;
+            if (!texture) fail("gl " + name, "reads '" + r.name + "', which this run has not", "valid: depth, normals (a G-buffer with them), noise, ao_input");
+            glActiveTexture(GL_TEXTURE0 + unit);
+            glBindTexture(GL_TEXTURE_2D, texture);
+            glBindSampler(unit, sampler);
+        }
+    }
+}
+
+// A fragment pass: the fullscreen triangle into `output` (w × h).
+inline void draw(objects& gl, GLuint output, int w, int h)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, gl.framebuffer());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, output, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        fail("gl chain", "an R8 colour attachment is not renderable here", "valid: OpenGL 4.5 or OpenGL ES 3.0 and later");
+    glDisable(GL_DITHER); // on by default: it may perturb the unorm conversion
+    glViewport(0, 0, w, h);
+    glBindVertexArray(gl.vertex_array());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 } // namespace detail
 
 // `o` must be the codegen options the texts were generated with (their output format).
-inline chain_result run(const context& ctx, const variant& v, const std::vector<std::string>& glsl, const gbuffer& g, const chain_inputs& in,
+inline chain_result run(const context& ctx, const variant& v, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in,
                         const codegen::options& o = {})
 {
     ctx.make_current();
     validate(v);
-    if (v.stage != pipeline_stage::compute)
-        fail("gl chain", to_name(v) + " is a fragment variant", "valid: compute variants (fragment passes are not run on GL yet)");
     const std::vector<pass_kind> kinds = passes(v);
-    if (glsl.size() != kinds.size() || in.uniforms.size() != kinds.size())
-        fail("gl chain", std::to_string(glsl.size()) + " GLSL texts and " + std::to_string(in.uniforms.size()) + " uniform blocks for " + to_name(v),
-             "valid: one of each per pass, " + std::to_string(kinds.size()));
+    const std::vector<shader_stage> stages = codegen::stages(v);
+    if (texts.size() != kinds.size() * stages.size() || in.uniforms.size() != kinds.size())
+        fail("gl chain", std::to_string(texts.size()) + " texts and " + std::to_string(in.uniforms.size()) + " uniform blocks for " + to_name(v),
+             "valid: " + std::to_string(kinds.size() * stages.size()) + " texts (" + std::to_string(stages.size()) + " per pass) and " +
+                 std::to_string(kinds.size()) + " uniform blocks");
     const size_t pixels = size_t(g.width) * size_t(g.height);
     if (g.width < 1 || g.height < 1 || g.depth.size() != pixels || (!g.normals.empty() && g.normals.size() != 4 * pixels))
         fail("gl chain", "G-buffer of " + std::to_string(g.width) + "x" + std::to_string(g.height) + " with " + std::to_string(g.depth.size()) + " depths",
              "valid: width × height depths and none or 4 × that normals");
 
     detail::objects gl;
-    const GLuint depth = gl.texture(g.width, g.height, GL_R32F, GL_RED, GL_FLOAT, g.depth.data());
-    const GLuint normals = g.normals.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.normals.data());
-    const GLuint noise = gl.texture(in.noise_size, in.noise_size, GL_RGBA32F, GL_RGBA, GL_FLOAT, in.noise.data());
-    const GLuint clamp = gl.sampler(GL_CLAMP_TO_EDGE), repeat = gl.sampler(GL_REPEAT);
+    detail::chain_textures t;
+    t.depth = gl.texture(g.width, g.height, GL_R32F, GL_RED, GL_FLOAT, g.depth.data());
+    t.normals = g.normals.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.normals.data());
+    t.noise = gl.texture(in.noise_size, in.noise_size, GL_RGBA32F, GL_RGBA, GL_FLOAT, in.noise.data());
+    t.clamp = gl.sampler(GL_CLAMP_TO_EDGE), t.repeat = gl.sampler(GL_REPEAT);
     const auto [tw, th] = target_size(v, g.width, g.height);
+    const bool compute = v.stage == pipeline_stage::compute;
+    const GLenum format = compute ? detail::image_format(o.output_format) : GL_R8;
 
-    const GLenum format = detail::image_format(o.output_format);
     GLuint previous = 0;
     int out_w = 0, out_h = 0;
     for (size_t i = 0; i < kinds.size(); ++i) {
@@ -189,29 +285,20 @@ inline chain_result run(const context& ctx, const variant& v, const std::vector<
         const std::string name = to_name(v) + "." + names::name_of(pass_kind_names, pass, "pass");
         out_w = pass == pass_kind::upsample ? g.width : tw, out_h = pass == pass_kind::upsample ? g.height : th;
         const GLuint output = gl.texture(out_w, out_h, format, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-        glUseProgram(gl.program(glsl[i], name));
-        for (const codegen::resource& r : codegen::resources(v, pass, shader_stage::compute, o)) {
-            const GLuint unit = r.binding;
-            if (r.kind == codegen::resource_kind::uniform_buffer) {
-                glBindBufferBase(GL_UNIFORM_BUFFER, unit, gl.uniform_buffer(in.uniforms[i]));
-            } else if (r.kind == codegen::resource_kind::storage_image) {
-                if (r.name != "output") fail("gl " + name, "binds storage image '" + r.name + "'", "valid: output (no diagnostics on GL)");
-                glBindImageTexture(unit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-            } else {
-                GLuint texture = 0, sampler = clamp;
-                if (r.name == "depth") texture = depth;
-                else if (r.name == "normals") texture = normals;
-                else if (r.name == "noise") texture = noise, sampler = repeat;
-                else if (r.name == "ao_input") texture = previous;
-                if (!texture) fail("gl " + name, "reads '" + r.name + "', which this run has not", "valid: depth, normals (a G-buffer with them), noise, ao_input");
-                glActiveTexture(GL_TEXTURE0 + unit);
-                glBindTexture(GL_TEXTURE_2D, texture);
-                glBindSampler(unit, sampler);
-            }
+        const std::string& last = texts[i * stages.size() + stages.size() - 1]; // the compute or fragment shader
+        const GLuint program = compute ? gl.program({{GL_COMPUTE_SHADER, &last}}, name)
+                                       : gl.program({{GL_VERTEX_SHADER, &texts[i * 2]}, {GL_FRAGMENT_SHADER, &last}}, name);
+        glUseProgram(program);
+        const std::vector<codegen::resource> resources = codegen::resources(v, pass, stages.back(), o);
+        if (!detail::has_binding_qualifiers(last)) detail::bind_by_name(program, resources);
+        detail::bind_resources(gl, resources, name, in.uniforms[i], t, previous, output, format);
+        if (compute) {
+            const int k = pixels_per_invocation(pass, pipeline_stage::compute);
+            glDispatchCompute(detail::groups(out_w, k, v.workgroup_x), detail::groups(out_h, k, v.workgroup_y), 1);
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        } else {
+            detail::draw(gl, output, out_w, out_h);
         }
-        const int k = pixels_per_invocation(pass, pipeline_stage::compute);
-        glDispatchCompute(detail::groups(out_w, k, v.workgroup_x), detail::groups(out_h, k, v.workgroup_y), 1);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         previous = output;
     }
     chain_result r;
