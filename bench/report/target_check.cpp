@@ -16,6 +16,7 @@
 
 #include <aogen/ao_difference.hpp>
 #include <aogen/compile.hpp>
+#include <aogen/emitted.hpp>
 #include <aogen/gl/chain.hpp>
 #include <aogen/matrix.hpp>
 #include <aogen/vulkan/hlsl_round_trip.hpp>
@@ -35,14 +36,6 @@ struct tally {
     float worst = 0;
     std::string worst_variant;
 };
-
-std::vector<std::string> texts(const aogen::variant& v, aogen::compile::target t, const aogen::codegen::options& o)
-{
-    std::vector<std::string> out;
-    for (const aogen::codegen::shader_source& s : aogen::codegen::generate(v, o))
-        out.push_back(aogen::compile::compile(s.glsl, s.stage, s.name, {t}).text.at(t));
-    return out;
-}
 
 } // namespace
 
@@ -87,8 +80,8 @@ int main(int argc, char** argv)
                 // (and has no min16float3x3), so a round trip would not run their arithmetic.
                 const auto run = [&](int k) -> std::optional<std::vector<float>> {
                     if (v.fp16) return std::nullopt;
-                    if (k == 0) return aogen::gl::run(gl, v, texts(v, aogen::compile::target::glsl, {}), gbuffers.host(v), in).ao;
-                    if (k == 1) return aogen::gl::run(es, v, texts(v, aogen::compile::target::essl, rgba8), gbuffers.host(v), in, rgba8).ao;
+                    if (k == 0) return aogen::gl::run(gl, v, aogen::emitted_texts(v, aogen::compile::target::glsl), gbuffers.host(v), in).ao;
+                    if (k == 1) return aogen::gl::run(es, v, aogen::emitted_texts(v, aogen::compile::target::essl, rgba8), gbuffers.host(v), in, rgba8).ao;
                     const aogen::compile::target hlsl = k == 2 ? aogen::compile::target::hlsl50 : aogen::compile::target::hlsl60;
                     return aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, v, hlsl), gbuffers.gpu(v), in, tw, th).run_once().ao;
                 };

@@ -228,6 +228,12 @@ inline std::vector<float> run_main(const std::vector<uint32_t>& words, size_t co
     return r;
 }
 
+// `x` as a GLSL float literal (rounded to float first): what the test expressions are built of.
+inline std::string glsl_literal(double x)
+{
+    return aogen::codegen::detail::glsl_float(static_cast<float>(x));
+}
+
 // Each GLSL float expression evaluated with the AO pass of `v` (its templates up to and
 // including the technique's) in scope: the pass is generated as usual with
 // entry_compute.glsl replaced by a main() that stores the expressions, then compiled,

@@ -18,7 +18,7 @@ using namespace aogen;
 
 namespace {
 
-std::string lit(double x) { return codegen::detail::glsl_float(static_cast<float>(x)); }
+std::string lit(double x) { return aogen_test::glsl_literal(x); }
 
 std::vector<float> evaluate(const std::vector<std::string>& expressions)
 {

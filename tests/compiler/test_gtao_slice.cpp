@@ -38,7 +38,7 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 constexpr double half_pi = pi / 2;
 
-std::string lit(double x) { return codegen::detail::glsl_float(static_cast<float>(x)); }
+std::string lit(double x) { return aogen_test::glsl_literal(x); }
 
 // Each GLSL float expression evaluated with gtao.glsl (and the files before it) in scope.
 std::vector<float> evaluate(const std::vector<std::string>& expressions)

@@ -10,6 +10,7 @@
 
 #include <aogen/ao_difference.hpp>
 #include <aogen/compile.hpp>
+#include <aogen/emitted.hpp>
 #include <aogen/gl/chain.hpp>
 
 #include <iostream>
@@ -37,21 +38,13 @@ gl::context* shared_gl(gl::api which)
     return ctx[i].get();
 }
 
-// The text of each pass of `v` for `target` (glsl: GLSL 450, essl: ESSL 310), generated with `o`.
-std::vector<std::string> texts_of(const variant& v, compile::target target, const codegen::options& o)
-{
-    std::vector<std::string> out;
-    for (const codegen::shader_source& s : codegen::generate(v, o)) out.push_back(compile::compile(s.glsl, s.stage, s.name, {target}).text.at(target));
-    return out;
-}
-
 // `v`'s `target` text on `gl` against its SPIR-V on `vk`, on G-buffer `g` with settings `s`.
 void compare_one(vulkan::context& vk, gl::context& gl, const variant& v, compile::target target, const codegen::options& o,
                  const vulkan::gbuffer& g, const vulkan::chain_settings& s)
 {
     const vulkan::chain_result expected = vulkan::chain(vk, v).run(g, s);
     const auto [tw, th] = target_size(v, g.width, g.height);
-    const gl::chain_result got = gl::run(gl, v, texts_of(v, target, o), g, inputs_for(v, s, tw, th), o);
+    const gl::chain_result got = gl::run(gl, v, emitted_texts(v, target, o), g, inputs_for(v, s, tw, th), o);
     REQUIRE(got.width == expected.width);
     REQUIRE(got.height == expected.height);
     const ao_difference d = difference_of(got.ao, expected.ao);

@@ -27,7 +27,7 @@
 //
 // USAGE
 //     aogen::gl::context gl;
-//     std::vector<std::string> texts = ...;   // compile::compile(s.glsl, ..., {target::glsl}).text
+//     std::vector<std::string> texts = aogen::emitted_texts(v, aogen::compile::target::glsl); // aogen/emitted.hpp
 //     aogen::gl::chain_result r = aogen::gl::run(gl, v, texts, g, aogen::inputs_for(v, s, tw, th));
 //
 // ERRORS

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "../compile.hpp"
+#include "../emitted.hpp"
 #include "passes.hpp"
 
 #include <memory>
@@ -24,8 +25,10 @@ inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const varia
         fail("hlsl round trip target", compile::to_name(target), "valid: hlsl, hlsl60");
     spirv_cache cache;
     std::vector<codegen::shader_source> sources = codegen::generate(v);
-    for (codegen::shader_source& s : sources) {
-        s.glsl = compile::compile(s.glsl, s.stage, s.name, {target}).text.at(target); // the cache's key: the pass's text is the HLSL now
+    const std::vector<std::string> hlsl = emitted_texts(v, target);
+    for (size_t i = 0; i < sources.size(); ++i) {
+        codegen::shader_source& s = sources[i];
+        s.glsl = hlsl[i]; // the cache's key: the pass's text is the HLSL now
         cache.put(s, compile::hlsl_to_spirv(s.glsl, s.stage, s.name + "." + compile::to_name(target)));
     }
     return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (" + compile::to_name(target) + " round trip)", v.stage, v.workgroup_x,
