@@ -34,7 +34,7 @@
 #define AO_BLUR_DIRECTION ivec2(0, 1)
 #endif
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 const float AO_BLUR_WEIGHTS[4] = float[4](AO_BLUR_WEIGHT_0, AO_BLUR_WEIGHT_1, AO_BLUR_WEIGHT_2, AO_BLUR_WEIGHT_3);
 

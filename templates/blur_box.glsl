@@ -17,7 +17,7 @@
 #error aogen: AO_BINDING_AO_INPUT is not defined (codegen writes the bindings)
 #endif
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 float ao_pass(ivec2 p)
 {

@@ -39,7 +39,7 @@
 #error aogen: AO_BINDING_AO_INPUT is not defined (codegen writes the bindings)
 #endif
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 const float AO_DENOISE_WEIGHTS[3] = float[3](AO_DENOISE_WEIGHT_0, AO_DENOISE_WEIGHT_1, AO_DENOISE_WEIGHT_2);
 

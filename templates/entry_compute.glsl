@@ -19,10 +19,8 @@
 
 layout(local_size_x = AO_WORKGROUP_X, local_size_y = AO_WORKGROUP_Y, local_size_z = 1) in;
 
-layout(set = 0, binding = AO_BINDING_OUTPUT, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;
-#if defined(AO_DIAGNOSTICS)
-layout(set = 0, binding = AO_BINDING_RAW, r32f) uniform writeonly image2D u_raw;
-#endif
+// u_output: declared by aogen::codegen (aogen/bindings.hpp).
+// u_raw: declared by aogen::codegen (aogen/bindings.hpp).
 
 #if defined(AO_PASS_WRITES_QUADS)
 // A pass whose invocation writes a 2 x 2 square of output pixels (upsample.glsl): its

@@ -10,9 +10,7 @@
 // fragmentStoresAndAtomics.
 
 layout(location = 0) out float o_ao;
-#if defined(AO_DIAGNOSTICS)
-layout(set = 0, binding = AO_BINDING_RAW, r32f) uniform writeonly image2D u_raw;
-#endif
+// u_raw: declared by aogen::codegen (aogen/bindings.hpp).
 
 void main()
 {

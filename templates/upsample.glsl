@@ -30,7 +30,7 @@
 #error aogen: AO_BINDING_AO_INPUT is not defined (codegen writes the bindings)
 #endif
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 // The four target texels around screen pixel 2 q0 .. 2 q0 + 1, in the order q0, q0 + (1, 0),
 // q0 + (0, 1), q0 + (1, 1): their AO (finite, in [0, 1]), their view z, and whether each

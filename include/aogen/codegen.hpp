@@ -29,21 +29,21 @@
 //   shader. Its text is the same for every pass and variant (it has no defines), so a
 //   caller can compile it once.
 //
-// RESOURCES (descriptor set 0; GLSL's combined image samplers)
-//   AO pass    0 uniform block (SsaoUniforms, or GtaoUniforms for gtao, VbaoUniforms for vbao)
-//              1 depth    sampler2D, full resolution, raw depth in .r
-//              2 normals  sampler2D, float xyz, only for G-buffer normals (a reconstructed-
-//                         normal variant declares no binding 2)
-//              3 noise    sampler2D, the noise tile as floats (rgba32f/rgba16f/rg16f)
-//              4 output   storage image, options::output_format (r8 by default; compute only)
-//   blur_x, blur_y, blur_box, blur_denoise, upsample
-//              0 BlurUniforms, 1 depth (full resolution), 2 ao_input sampler2D,
-//              3 output storage image, options::output_format (compute only); the
-//              upsample pass's output is screen-sized, every other pass's the AO target's
-//   Fragment passes write `layout(location = 0) out float`. resources() lists them all.
-//   With options::diagnostics every pass also declares
-//              raw      storage image r32f (binding 5 in the AO pass, 4 in blur passes;
-//                       compute and fragment shaders alike)
+// RESOURCES (descriptor set 0 / bind group 0; aogen/bindings.hpp's table)
+//   resources(v, pass, stage, o) lists what one shader binds, each with its role, kind,
+//   binding and GLSL name, and generate() declares them from that list, after the uniform
+//   block — the templates declare no resource, they use the names:
+//     u (the uniform block: SsaoUniforms, GtaoUniforms, VbaoUniforms or BlurUniforms),
+//     u_depth, u_normals (G-buffer variants), u_noise, u_ao_input (filter passes),
+//     u_output (compute passes), u_raw (options::diagnostics)
+//   options::model picks the binding model (bindings.hpp):
+//     vulkan   every texture a combined sampler2D (what GLSL, ESSL, HLSL and MSL are made from)
+//     webgpu   textures as texture2D; a gathered one (u_depth, u_ao_input) with a sampler at
+//              the next binding and `#define u_depth sampler2D(u_depth_texture,
+//              u_depth_sampler)`, so the templates read alike in both; the others read with
+//              texelFetch under GL_EXT_samplerless_texture_functions (WGSL's textureLoad).
+//              What the WGSL target is made from (compile/wgsl.hpp).
+//   Fragment passes write `layout(location = 0) out float`. The raw image is r32f.
 //
 // OPTIONS (codegen::options; generate(v) uses the defaults)
 //   output_format   the format qualifier of compute passes' output image, written as
@@ -102,6 +102,7 @@
 //   above, an unreadable template file (naming the path), no embedded templates.
 #pragma once
 
+#include "bindings.hpp"
 #include "declare.hpp"
 #include "error.hpp"
 #include "layout.hpp"
@@ -117,6 +118,7 @@
 #endif
 #endif
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <fstream>
@@ -135,10 +137,12 @@ namespace aogen::codegen {
 using aogen::shader_stage; // defined in variant.hpp, shared with compile.hpp
 using aogen::file_extension;
 
-enum class resource_kind { uniform_buffer, combined_image_sampler, storage_image };
-inline constexpr std::array<enum_name<resource_kind>, 3> resource_kind_names{{
+enum class resource_kind { uniform_buffer, combined_image_sampler, sampled_image, sampler, storage_image };
+inline constexpr std::array<enum_name<resource_kind>, 5> resource_kind_names{{
     {resource_kind::uniform_buffer, "uniform_buffer"},
     {resource_kind::combined_image_sampler, "combined_image_sampler"},
+    {resource_kind::sampled_image, "sampled_image"},
+    {resource_kind::sampler, "sampler"},
     {resource_kind::storage_image, "storage_image"},
 }};
 static_assert(names::distinct(resource_kind_names));
@@ -153,6 +157,7 @@ inline const char* to_name(resource_kind k) { return names::name_of(resource_kin
 struct options {
     std::string output_format = "r8"; // compute passes' output image: r8, rgba8, r32f, rgba16f
     bool diagnostics = false;         // every pass also stores its raw, unguarded value (see OPTIONS)
+    binding_model model = binding_model::vulkan; // combined samplers, or WebGPU's separate ones (RESOURCES)
 };
 
 // The output formats options::output_format accepts, in the order error messages list them.
@@ -161,24 +166,27 @@ inline constexpr std::array<std::string_view, 4> output_formats{{"r8", "rgba8", 
 // aogen::error unless every option is valid.
 inline void validate(const options& o)
 {
-    for (std::string_view f : output_formats)
-        if (o.output_format == f) return;
+    names::require_listed(binding_model_names, o.model, "binding model");
+    const bool known = std::find(output_formats.begin(), output_formats.end(), o.output_format) != output_formats.end();
     std::string valid;
     for (std::string_view f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f);
-    fail("output format", quote(o.output_format) + " is not a storage image format aogen writes", "valid: " + valid);
+    if (!known) fail("output format", quote(o.output_format) + " is not a storage image format aogen writes", "valid: " + valid);
+    // Core WebGPU's storage textures have no one-channel 8-bit format (r8unorm).
+    if (o.model == binding_model::webgpu && o.output_format == "r8")
+        fail("output format", "r8 is not a storage texture format of core WebGPU", "valid: rgba8, r32f, rgba16f");
 }
 
-// One descriptor a shader declares. `name` is the role ("uniforms", "depth", "normals",
-// "noise", "ao_input", "output"); the GLSL variable is u_<name> (the uniform block's
-// instance is `u`, its type `block`), and the templates read the binding number from
-// the #define AO_BINDING_<NAME>.
+// One descriptor a shader declares (RESOURCES). `name` is its role's name ("depth"), or
+// "<role>_sampler" for the sampler WebGPU pairs with a gathered texture; codegen also
+// writes its binding as #define AO_BINDING_<NAME>.
 struct resource {
     uint32_t set = 0;
     uint32_t binding = 0;
     resource_kind kind = resource_kind::combined_image_sampler;
     std::string name;
-    std::string block; // uniform buffers: the block's type name (SsaoUniforms, ...)
+    std::string block;  // uniform buffers: the block's type name (SsaoUniforms, ...)
     std::string format; // storage images: the format qualifier (options::output_format)
+    resource_role role = resource_role::depth;
 };
 
 // The stages a variant's pass runs as: compute, or vertex + fragment.
@@ -242,7 +250,7 @@ inline layout::block_desc uniform_block(const variant& v, pass_kind pass)
     return uniforms::ssao_block(v.ssao_samples); // the point-cloud fallback too
 }
 
-// The descriptors one shader of a variant's pass declares, by binding.
+// The descriptors one shader of a variant's pass declares, by binding (bindings.hpp).
 inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_stage stage, const options& o = {})
 {
     validate(v);
@@ -251,21 +259,49 @@ inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_
     detail::require_stage(v, stage);
     if (stage == shader_stage::vertex) return {};
     using k = resource_kind;
+    const pass_family family = family_of(pass);
     std::vector<resource> r;
-    r.push_back({0, 0, k::uniform_buffer, "uniforms", uniform_block(v, pass).root.name, ""});
-    r.push_back({0, 1, k::combined_image_sampler, "depth", "", ""});
-    if (pass == pass_kind::ao) {
-        if (v.normals != normal_source::reconstructed) r.push_back({0, 2, k::combined_image_sampler, "normals", "", ""});
-        r.push_back({0, 3, k::combined_image_sampler, "noise", "", ""});
-        if (stage == shader_stage::compute) r.push_back({0, 4, k::storage_image, "output", "", o.output_format});
-        if (o.diagnostics) r.push_back({0, 5, k::storage_image, "raw", "", "r32f"});
-    } else {
-        r.push_back({0, 2, k::combined_image_sampler, "ao_input", "", ""});
-        if (stage == shader_stage::compute) r.push_back({0, 3, k::storage_image, "output", "", o.output_format});
-        if (o.diagnostics) r.push_back({0, 4, k::storage_image, "raw", "", "r32f"});
+    for (resource_role role : pass_roles(family)) {
+        const bool declared = role == resource_role::normals  ? v.normals != normal_source::reconstructed
+                              : role == resource_role::output ? stage == shader_stage::compute
+                              : role == resource_role::raw    ? o.diagnostics
+                                                              : true;
+        if (!declared) continue;
+        const uint32_t binding = binding_of(family, role, o.model);
+        const std::string name = to_name(role);
+        if (role == resource_role::uniforms) r.push_back({0, binding, k::uniform_buffer, name, uniform_block(v, pass).root.name, "", role});
+        else if (role == resource_role::output) r.push_back({0, binding, k::storage_image, name, "", o.output_format, role});
+        else if (role == resource_role::raw) r.push_back({0, binding, k::storage_image, name, "", "r32f", role});
+        else if (o.model == binding_model::vulkan) r.push_back({0, binding, k::combined_image_sampler, name, "", "", role});
+        else {
+            r.push_back({0, binding, k::sampled_image, name, "", "", role});
+            if (auto s = sampler_binding_of(family, role, o.model)) r.push_back({0, *s, k::sampler, name + "_sampler", "", "", role});
+        }
     }
     return r;
 }
+
+namespace detail {
+
+// The GLSL declaration of one non-block resource (RESOURCES).
+inline std::string declaration(const resource& r)
+{
+    const std::string at = "layout(set = " + std::to_string(r.set) + ", binding = " + std::to_string(r.binding);
+    switch (r.kind) {
+    case resource_kind::combined_image_sampler: return at + ") uniform sampler2D u_" + r.name + ";\n";
+    case resource_kind::storage_image: return at + ", " + r.format + ") uniform writeonly image2D u_" + r.name + ";\n";
+    case resource_kind::sampled_image:
+        // A gathered texture is named u_<role>_texture and sampled through its pair's macro.
+        return at + ") uniform texture2D u_" + r.name + (is_gathered(r.role) ? "_texture" : "") + ";\n";
+    case resource_kind::sampler:
+        return at + ") uniform sampler u_" + r.name + ";\n#define u_" + std::string(to_name(r.role)) + " sampler2D(u_" +
+               to_name(r.role) + "_texture, u_" + r.name + ")\n";
+    case resource_kind::uniform_buffer: break;
+    }
+    fail("resource " + r.name, "has no declaration of its own", "valid: a texture, sampler or storage image");
+}
+
+} // namespace detail
 
 // The template files of one shader, in the order they are concatenated.
 inline std::vector<std::string> template_files(const variant& v, pass_kind pass, shader_stage stage)
@@ -419,6 +455,9 @@ inline shader_source generate_shader(const variant& v, pass_kind pass, shader_st
     // A GLSL #extension must come before the first declaration; ao_half (common/core.glsl) needs it.
     if (v.fp16 && pass == pass_kind::ao && stage != shader_stage::vertex)
         g += "#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n";
+    // WebGPU's textures without a sampler are read with texelFetch/textureSize on a texture2D.
+    if (o.model == binding_model::webgpu && stage != shader_stage::vertex)
+        g += "#extension GL_EXT_samplerless_texture_functions : require\n";
     if (stage == shader_stage::vertex) {
         g += "// aogen: the fullscreen-triangle vertex shader of every fragment pass. Generated by aogen::codegen; do not edit.\n";
     } else {
@@ -444,6 +483,9 @@ inline shader_source generate_shader(const variant& v, pass_kind pass, shader_st
         options.binding = s.resources.front().binding;
         options.instance = "u";
         g += layout::declare(block, layout::language::glsl, options);
+        g += "#line 1 \"aogen:resources\"\n";
+        for (const resource& r : s.resources)
+            if (r.kind != resource_kind::uniform_buffer) g += detail::declaration(r);
     }
     for (const std::string& file : s.files) {
         std::string text = read(file);

@@ -8,7 +8,7 @@
 // 1079 -> 960 x 540), and target pixel p reads depth and normals at full-resolution
 // pixel 2p (clamped to the screen; the last row/column of an odd size is not read).
 
-layout(set = 0, binding = AO_BINDING_DEPTH) uniform sampler2D u_depth;
+// u_depth: declared by aogen::codegen (aogen/bindings.hpp).
 
 // The depth buffer's size in pixels (at least 1 x 1).
 ivec2 ao_depth_size()

@@ -7,7 +7,7 @@
 // and works, to 8-bit precision). The tile repeats over the AO target: pixel p reads
 // texel p % tile size with texelFetch (no sampler state involved).
 
-layout(set = 0, binding = AO_BINDING_NOISE) uniform sampler2D u_noise;
+// u_noise: declared by aogen::codegen (aogen/bindings.hpp).
 
 // The unit rotation (cos t, sin t) for AO target pixel p (p >= 0). A zero or non-finite
 // texel gives (1, 0): no rotation.

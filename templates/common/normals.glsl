@@ -21,9 +21,7 @@
 #error aogen: define exactly one of AO_NORMALS_GBUFFER_WORLD AO_NORMALS_GBUFFER_VIEW AO_NORMALS_RECONSTRUCTED
 #endif
 
-#if !defined(AO_NORMALS_RECONSTRUCTED)
-layout(set = 0, binding = AO_BINDING_NORMALS) uniform sampler2D u_normals;
-#endif
+// u_normals: declared by aogen::codegen (aogen/bindings.hpp).
 
 // The unit vector from a view-space point toward the camera.
 vec3 ao_view_direction(vec3 P)

@@ -8,7 +8,7 @@
 #define AO_BLUR_DIRECTION ivec2(0, 1)
 #endif
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 float ao_pass(ivec2 p)
 {

@@ -1,7 +1,7 @@
 // floor/blur_box.glsl -- the fetch floor of blur_box.glsl: the centre's depth, then the
 // AO_BLUR_BOX_SIZE x AO_BLUR_BOX_SIZE AO taps inside the target. No average.
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 float ao_pass(ivec2 p)
 {

@@ -2,7 +2,7 @@
 // (depth, AO) loaded into shared memory (floors are compute kernels), then the 25 taps read
 // from it. No view depth, no weights.
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 #define AO_TILE_WIDTH (AO_WORKGROUP_X + 2 * AO_DENOISE_RADIUS)
 #define AO_TILE_HEIGHT (AO_WORKGROUP_Y + 2 * AO_DENOISE_RADIUS)

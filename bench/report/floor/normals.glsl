@@ -2,9 +2,7 @@
 // finding the surface normal costs, without the normal itself; and what both AO floors
 // (ssao.glsl, gtao.glsl) read at the centre pixel before their samples.
 
-#if !defined(AO_NORMALS_RECONSTRUCTED)
-layout(set = 0, binding = AO_BINDING_NORMALS) uniform sampler2D u_normals;
-#endif
+// u_normals: declared by aogen::codegen (aogen/bindings.hpp).
 
 // The depth at full-resolution pixel q, or 0 off screen (the real passes skip those).
 float ao_floor_depth(ivec2 q)

@@ -3,7 +3,7 @@
 // their depths, the depths of the four target texels around them and one gather of those
 // texels' AO. No weights.
 
-layout(set = 0, binding = AO_BINDING_AO_INPUT) uniform sampler2D u_ao_input;
+// u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
 #define AO_PASS_WRITES_QUADS
 

@@ -219,18 +219,24 @@ inline void bind_resources(objects& gl, const std::vector<codegen::resource>& re
         if (r.kind == codegen::resource_kind::uniform_buffer) {
             glBindBufferBase(GL_UNIFORM_BUFFER, unit, gl.uniform_buffer(uniforms));
         } else if (r.kind == codegen::resource_kind::storage_image) {
-            if (r.name != "output") fail("gl " + name, "binds storage image '" + r.name + "'", "valid: output (no diagnostics on GL)");
+            if (r.role != resource_role::output) fail("gl " + name, "binds storage image '" + r.name + "'", "valid: output (no diagnostics on GL)");
             glBindImageTexture(unit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-        } else {
+        } else if (r.kind == codegen::resource_kind::combined_image_sampler) {
             GLuint texture = 0, sampler = t.clamp;
-            if (r.name == "depth") texture = t.depth;
-            else if (r.name == "normals") texture = t.normals;
-            else if (r.name == "noise") texture = t.noise, sampler = t.repeat;
-            else if (r.name == "ao_input") texture = previous;
+            switch (r.role) {
+            case resource_role::depth: texture = t.depth; break;
+            case resource_role::normals: texture = t.normals; break;
+            case resource_role::noise: texture = t.noise, sampler = t.repeat; break;
+            case resource_role::ao_input: texture = previous; break;
+            default: break;
+            }
             if (!texture) fail("gl " + name, "reads '" + r.name + "', which this run has not", "valid: depth, normals (a G-buffer with them), noise, ao_input");
             glActiveTexture(GL_TEXTURE0 + unit);
             glBindTexture(GL_TEXTURE_2D, texture);
             glBindSampler(unit, sampler);
+        } else {
+            fail("gl " + name, "binds " + std::string(codegen::to_name(r.kind)) + " '" + r.name + "'",
+                 "valid: the vulkan binding model's resources (OpenGL has combined samplers only)");
         }
     }
 }

@@ -86,7 +86,7 @@ public:
                         " (valid: one block per pass, " + std::to_string(passes.size()) + ")");
         for (size_t i = 0; i < passes.size(); ++i)
             for (const codegen::resource& r : passes[i].resources)
-                if (r.name == "raw") has_raw_ = true;
+                if (r.role == resource_role::raw) has_raw_ = true;
         resource_scope staging(ctx);
         VkCommandBuffer cb = staging.begin_commands();
         upload_inputs(cb, in, staging);
@@ -282,28 +282,42 @@ private:
         return make_descriptor_pool(scope_, sizes, static_cast<uint32_t>(passes_.size()));
     }
 
-    // The image (and sampler) a sampled resource of pass `i` reads.
+    // The image and sampler a texture role of pass `i` reads.
     VkDescriptorImageInfo sampled(const codegen::resource& r, size_t i, const gpu_gbuffer& g) const
     {
         const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-        if (r.name == "depth") return {clamp_, g.depth().view, read};
-        if (r.name == "normals") {
+        switch (r.role) {
+        case resource_role::depth: return {clamp_, g.depth().view, read};
+        case resource_role::normals:
             if (!g.has_normals())
                 throw error("vulkan bound chain: " + passes_.name() + " reads normals, and the G-buffer has none (valid: a G-buffer with "
                             "width × height × 4 normals, or a reconstructed-normal variant)");
             return {clamp_, g.normals().view, read};
+        case resource_role::noise: return {repeat_, noise_.view, read};
+        case resource_role::ao_input:
+            if (i > 0) return {clamp_, outputs_[i - 1].view, read};
+            break;
+        default: break;
         }
-        if (r.name == "noise") return {repeat_, noise_.view, read};
-        if (r.name == "ao_input" && i > 0) return {clamp_, outputs_[i - 1].view, read};
         throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input)");
     }
 
     // A storage image of pass `i`: its output, or its raw values.
     VkDescriptorImageInfo stored(const codegen::resource& r, size_t i) const
     {
-        if (r.name == "output") return {VK_NULL_HANDLE, outputs_[i].view, VK_IMAGE_LAYOUT_GENERAL};
-        if (r.name == "raw") return {VK_NULL_HANDLE, raws_[i].view, VK_IMAGE_LAYOUT_GENERAL};
+        if (r.role == resource_role::output) return {VK_NULL_HANDLE, outputs_[i].view, VK_IMAGE_LAYOUT_GENERAL};
+        if (r.role == resource_role::raw) return {VK_NULL_HANDLE, raws_[i].view, VK_IMAGE_LAYOUT_GENERAL};
         throw error("vulkan bound chain: unknown storage image '" + r.name + "' (valid: output, raw)");
+    }
+
+    // What descriptor `r` of pass `i` points at: WebGPU's separate textures and samplers
+    // (binding_model::webgpu) take one half each of the combined descriptor.
+    VkDescriptorImageInfo image_info(const codegen::resource& r, size_t i, const gpu_gbuffer& g) const
+    {
+        VkDescriptorImageInfo info = r.kind == codegen::resource_kind::storage_image ? stored(r, i) : sampled(r, i, g);
+        if (r.kind == codegen::resource_kind::sampled_image) info.sampler = VK_NULL_HANDLE;
+        if (r.kind == codegen::resource_kind::sampler) info.imageView = VK_NULL_HANDLE, info.imageLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        return info;
     }
 
     // One descriptor set per pass, every binding of its resources written.
@@ -334,7 +348,7 @@ private:
                     bufs[k] = {uniforms_[i].first.handle, 0, uniforms_[i].second};
                     w.pBufferInfo = &bufs[k];
                 } else {
-                    imgs[k] = r.kind == codegen::resource_kind::storage_image ? stored(r, i) : sampled(r, i, g);
+                    imgs[k] = image_info(r, i, g);
                     w.pImageInfo = &imgs[k];
                 }
                 writes.push_back(w);

@@ -66,6 +66,8 @@ inline VkDescriptorType descriptor_type(codegen::resource_kind k)
     switch (k) {
     case codegen::resource_kind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     case codegen::resource_kind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    case codegen::resource_kind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case codegen::resource_kind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
     case codegen::resource_kind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     }
     throw error("vulkan: unknown resource kind");

@@ -1,0 +1,117 @@
+// aogen/bindings.hpp — what every pass binds, and at which binding number: one table per
+// pass family, read by codegen (declarations and AO_BINDING_* defines), the manifest, the
+// Vulkan and GL runners and README's table.
+//
+// WHAT
+//   A pass reads and writes resources by role (resource_role): its uniform block, the depth
+//   buffer, the G-buffer normals, the noise tile, the previous pass's AO, its output image and
+//   — in diagnostic builds — its raw-value image. Which roles a pass family has, in which
+//   order, is pass_roles(family): the AO pass, and the filter passes (blur_x, blur_y,
+//   blur_box, blur_denoise, upsample) that read an AO image. A role's binding numbers follow
+//   from its place in that table and the binding model:
+//
+//     binding_model::vulkan   (SPIR-V, GLSL, ESSL, HLSL, MSL) one binding per role; textures
+//                             are combined image samplers (GLSL's sampler2D), since OpenGL and
+//                             ESSL have nothing else and ESSL 300 binds them by name (u_<role>)
+//     binding_model::webgpu   (WGSL) WebGPU has no combined samplers: a texture is a
+//                             texture_2d (GLSL texture2D), and a texture the pass gathers from
+//                             (depth, ao_input: textureGather needs a sampler) is followed by
+//                             its sampler at the next binding; the noise tile and the normals
+//                             are read with textureLoad and need none
+//
+//                    vulkan                          webgpu (group 0)
+//     AO pass        0 uniforms  1 depth  2 normals   0 uniforms  1 depth  2 depth sampler
+//                    3 noise  4 output  5 raw          3 normals  4 noise  5 output  6 raw
+//     filter passes  0 uniforms  1 depth  2 ao_input  0 uniforms  1 depth  2 depth sampler
+//                    3 output  4 raw                   3 ao_input  4 ao_input sampler
+//                                                      5 output  6 raw
+//
+//   A number belongs to its role whether or not a given shader declares it: a reconstructed-
+//   normal variant has no binding 2 (vulkan), a fragment pass no output image, a shipped
+//   pass no raw image — the others keep their numbers, so one layout serves every variant.
+//
+// USAGE
+//     for (aogen::resource_role r : aogen::pass_roles(aogen::pass_family::ao)) ...
+//     aogen::binding_of(aogen::pass_family::ao, aogen::resource_role::noise, aogen::binding_model::webgpu);  // 4
+//     aogen::sampler_binding_of(aogen::pass_family::filter, aogen::resource_role::ao_input,
+//                               aogen::binding_model::webgpu);                                          // 4
+#pragma once
+
+#include "names.hpp"
+#include "variant.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace aogen {
+
+enum class binding_model { vulkan, webgpu };
+inline constexpr std::array<enum_name<binding_model>, 2> binding_model_names{{
+    {binding_model::vulkan, "vulkan"},
+    {binding_model::webgpu, "webgpu"},
+}};
+static_assert(names::distinct(binding_model_names));
+
+enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw };
+inline constexpr std::array<enum_name<resource_role>, 7> resource_role_names{{
+    {resource_role::uniforms, "uniforms"},
+    {resource_role::depth, "depth"},
+    {resource_role::normals, "normals"},
+    {resource_role::noise, "noise"},
+    {resource_role::ao_input, "ao_input"},
+    {resource_role::output, "output"},
+    {resource_role::raw, "raw"},
+}};
+static_assert(names::distinct(resource_role_names));
+inline const char* to_name(resource_role r) { return names::name_of(resource_role_names, r, "resource role"); }
+
+// The AO pass, or one of the passes that filter its image (blurs and the upsample).
+enum class pass_family { ao, filter };
+inline pass_family family_of(pass_kind p) { return p == pass_kind::ao ? pass_family::ao : pass_family::filter; }
+
+// The roles of a family, in binding order.
+inline std::vector<resource_role> pass_roles(pass_family f)
+{
+    using r = resource_role;
+    if (f == pass_family::ao) return {r::uniforms, r::depth, r::normals, r::noise, r::output, r::raw};
+    return {r::uniforms, r::depth, r::ao_input, r::output, r::raw};
+}
+
+// Is `role` a texture (sampled by the pass, as opposed to a buffer or a storage image)?
+inline bool is_texture(resource_role role)
+{
+    return role == resource_role::depth || role == resource_role::normals || role == resource_role::noise ||
+           role == resource_role::ao_input;
+}
+
+// Does the pass gather from it (textureGather), so that WebGPU needs a sampler beside it?
+inline bool is_gathered(resource_role role) { return role == resource_role::depth || role == resource_role::ao_input; }
+
+// The bindings a role takes in a model: the texture, storage image or block, then its sampler.
+inline uint32_t slots(resource_role role, binding_model m)
+{
+    return m == binding_model::webgpu && is_gathered(role) ? 2u : 1u;
+}
+
+// The binding number of `role` in family `f` under model `m` (the texture's, for a texture).
+inline uint32_t binding_of(pass_family f, resource_role role, binding_model m)
+{
+    uint32_t next = 0;
+    for (resource_role r : pass_roles(f)) {
+        if (r == role) return next;
+        next += slots(r, m);
+    }
+    fail("resource role", std::string(to_name(role)) + " is not bound by the " + (f == pass_family::ao ? "AO" : "filter") + " passes",
+         "valid: the roles of aogen::pass_roles");
+}
+
+// The binding of the sampler WebGPU pairs with a gathered texture; none otherwise.
+inline std::optional<uint32_t> sampler_binding_of(pass_family f, resource_role role, binding_model m)
+{
+    if (slots(role, m) < 2) return std::nullopt;
+    return binding_of(f, role, m) + 1;
+}
+
+} // namespace aogen
