@@ -47,6 +47,7 @@ inline const char* target_extension(compile::target t)
     case compile::target::hlsl60: return "sm60.hlsl";
     case compile::target::msl_macos: return "macos.metal";
     case compile::target::msl_ios: return "ios.metal";
+    case compile::target::wgsl: return "wgsl";
     }
     names::fail_unlisted(compile::target_names, t, "target");
 }
@@ -79,6 +80,7 @@ inline std::string spirv_array(const std::string& name, const std::vector<uint32
 //   round_tripped  compiled back to SPIR-V by glslang's HLSL front end and run on the Vulkan
 //                  harness (hlsl, hlsl60): the HLSL's meaning as glslang reads it, not DXC's
 //                  code generation
+//   round_tripped  (wgsl) translated back to SPIR-V by naga and run on the Vulkan harness
 //   validated      compiled and reflected, never run: MSL (no Metal compiler on Linux), and
 //                  the HLSL of fp16 variants -- glslang reads min16float as a 32-bit float
 //                  and has no min16float3x3, so a round trip would not run their arithmetic
@@ -90,6 +92,7 @@ inline const char* verification(compile::target t, const variant& v)
     case compile::target::essl: return "executed";
     case compile::target::hlsl50:
     case compile::target::hlsl60: return v.fp16 ? "validated" : "round_tripped";
+    case compile::target::wgsl: return "round_tripped";
     default: return "validated";
     }
 }
@@ -100,6 +103,8 @@ public:
     std::map<std::string, std::string> files; // path relative to DIR → bytes
     nlohmann::ordered_json manifest = {{"variants", nlohmann::ordered_json::array()}};
     std::string header;
+
+    bool targets_include(compile::target t) const { return std::find(targets.begin(), targets.end(), t) != targets.end(); }
 
     void add(const variant& v, const feature_list& features)
     {
@@ -124,6 +129,8 @@ public:
         nlohmann::ordered_json passes = nlohmann::ordered_json::array();
         const std::vector<codegen::shader_source> sources = codegen::generate(v);
         const std::vector<codegen::shader_source> essl_sources = codegen::generate(v, essl_options());
+        const std::vector<codegen::shader_source> wgsl_sources =
+            wants(compile::target::wgsl) ? codegen::generate(v, wgsl_options()) : std::vector<codegen::shader_source>{};
         for (size_t i = 0; i < sources.size(); ++i) {
             const codegen::shader_source& s = sources[i];
             const shader_stage stage = s.stage;
@@ -142,6 +149,7 @@ public:
                 outputs[compile::to_name(t)] = path;
                 if (t == compile::target::spv) files[path] = spirv_bytes(c.spirv);
                 else if (t == compile::target::essl) files[path] = essl->text.at(t);
+                else if (t == compile::target::wgsl) files[path] = wgsl_.at(wgsl_sources[i].glsl).text;
                 else files[path] = c.text.at(t);
             }
             pass["outputs"] = outputs;
@@ -149,8 +157,11 @@ public:
             nlohmann::ordered_json entries;
             for (const auto& [t, e] : c.refl.entry_points) entries[compile::to_name(t)] = e;
             if (essl) entries[compile::to_name(compile::target::essl)] = essl->refl.entry_points.at(compile::target::essl);
+            const translated_wgsl* wgsl = wants(compile::target::wgsl) ? &wgsl_.at(wgsl_sources[i].glsl) : nullptr;
+            if (wgsl) entries[compile::to_name(compile::target::wgsl)] = wgsl->refl.entry_points.at(compile::target::spv);
             pass["entry_points"] = entries;
             pass["bindings"] = bindings_json(c.refl);
+            if (wgsl) pass["wgsl_bindings"] = bindings_json(wgsl->refl); // bind group 0, as naga reads the WGSL
             if (stage == shader_stage::compute) {
                 pass["workgroup_size"] = {c.refl.workgroup_size[0], c.refl.workgroup_size[1], c.refl.workgroup_size[2]};
                 // Dispatch ceil(output size / pixels_per_invocation / workgroup size) groups.
@@ -162,12 +173,23 @@ public:
             for (const compile::descriptor_binding& b : c.refl.bindings)
                 ns_body += "inline constexpr std::uint32_t " + pass_id + "_binding_" + identifier(b.instance.empty() ? b.name : b.instance) +
                            " = " + std::to_string(b.binding) + ";\n";
+            if (wgsl)
+                for (const compile::descriptor_binding& b : wgsl->refl.bindings)
+                    ns_body += "inline constexpr std::uint32_t " + pass_id + "_wgsl_binding_" +
+                               identifier(b.instance.empty() ? b.name : b.instance) + " = " + std::to_string(b.binding) + ";\n";
             for (const codegen::resource& r : s.resources) {
                 if (r.kind != codegen::resource_kind::uniform_buffer) continue;
                 const layout::struct_layout l = layout::compute(codegen::uniform_block(v, s.pass), layout::rules::std140);
                 const compile::buffer_block* block = compile::find_block(c.refl, l.name);
                 if (!block) fail(s.name, "its SPIR-V has no uniform block " + l.name, "valid: the block codegen declared");
                 compile::check_layout(*block, l); // the core layout engine against SPIR-V's own offsets
+                if (wgsl) {
+                    // The same bytes under WGSL's rules: aogen's layout against naga's, read from
+                    // the SPIR-V naga makes of the WGSL it wrote.
+                    const std::optional<compile::buffer_block> naga_block = compile::find_struct_block(wgsl->refl, l.name);
+                    if (!naga_block) fail(s.name, "its WGSL has no uniform struct " + l.name, "valid: the block codegen declared");
+                    compile::check_layout(*naga_block, layout::compute(codegen::uniform_block(v, s.pass), layout::rules::wgsl_uniform));
+                }
                 pass["uniforms"] = layout_to_json(l);
                 if (std::find(declared_structs.begin(), declared_structs.end(), l.name) == declared_structs.end()) {
                     declared_structs.push_back(l.name);
@@ -205,8 +227,39 @@ public:
                "} // namespace aogen_variants\n";
     }
 
+    // Translates every WebGPU-model source of `variants` to WGSL in one batch (a Node.js
+    // process costs a quarter of a second): naga writes it, naga and Tint validate it, and
+    // naga's SPIR-V of it is reflected for the manifest's wgsl_bindings and the layout check.
+    void prepare_wgsl(const std::vector<variant>& variants)
+    {
+        if (!wants(compile::target::wgsl)) return;
+        std::vector<wgsl::spirv_job> jobs;
+        std::vector<std::string> keys;
+        for (const variant& v : variants)
+            for (const codegen::shader_source& s : codegen::generate(v, wgsl_options())) {
+                if (wgsl_.count(s.glsl) || std::find(keys.begin(), keys.end(), s.glsl) != keys.end()) continue;
+                const std::vector<uint32_t>& spirv = compiled_once(s.glsl, s.stage, s.name, {compile::target::spv}).spirv;
+                compile::require_wgsl_input(spirv, s.name); // an fp16 variant is refused by name, with the reason
+                jobs.push_back({s.name, s.stage, spirv});
+                keys.push_back(s.glsl);
+            }
+        if (jobs.empty()) return;
+        const wgsl::tools tools = wgsl::find_tools();
+        const std::vector<std::string> texts = wgsl::from_spirv(jobs, tools);
+        std::vector<wgsl::wgsl_job> back;
+        for (size_t i = 0; i < jobs.size(); ++i) back.push_back({jobs[i].name, jobs[i].stage, texts[i]});
+        const std::vector<std::vector<uint32_t>> spirv = wgsl::to_spirv(back, tools);
+        for (size_t i = 0; i < jobs.size(); ++i)
+            wgsl_[keys[i]] = {texts[i], compile::reflect(spirv[i], jobs[i].stage, jobs[i].name + " (naga's SPIR-V of its WGSL)")};
+    }
+
 private:
     std::map<std::pair<std::string, bool>, compile::compiled> cache_; // by GLSL source text and ESSL-only
+    struct translated_wgsl {
+        std::string text;
+        compile::reflection refl; // of naga's SPIR-V of the text
+    };
+    std::map<std::string, translated_wgsl> wgsl_; // by WebGPU-model GLSL source
 
     // ESSL 3.10 has no r8 image format, so the ESSL text of a compute pass comes from a
     // source whose output image is rgba8 (the AO in .r); every other target keeps r8.
@@ -217,13 +270,22 @@ private:
         return o;
     }
 
-    bool wants(compile::target t) const { return std::find(targets.begin(), targets.end(), t) != targets.end(); }
+    // WGSL: WebGPU's binding model, and an rgba8 output (core WebGPU has no r8unorm storage).
+    static codegen::options wgsl_options()
+    {
+        codegen::options o;
+        o.model = binding_model::webgpu;
+        o.output_format = "rgba8";
+        return o;
+    }
+
+    bool wants(compile::target t) const { return targets_include(t); }
 
     std::vector<compile::target> other_targets() const
     {
         std::vector<compile::target> out;
         for (compile::target t : targets)
-            if (t != compile::target::essl) out.push_back(t);
+            if (t != compile::target::essl && t != compile::target::wgsl) out.push_back(t);
         return out;
     }
 
@@ -265,7 +327,7 @@ struct generate_command {
     std::string spec;
     std::string scene;
     std::string out;
-    std::string targets = "spv,glsl,essl,hlsl,hlsl60,msl,msl_ios";
+    std::string targets = "spv,glsl,essl,hlsl,hlsl60,msl,msl_ios"; // wgsl on request: it needs Node.js
     std::vector<std::string> variant_names;
     bool quiet = false;
 
@@ -274,7 +336,8 @@ struct generate_command {
         CLI::App* sub = app.add_subcommand("generate", "Generate shader variants for every target, a manifest and a C++ header");
         sub->add_option("--variants", spec, "A variant spec (JSON: \"variants\" names and/or \"matrices\")")->check(not_empty("a variant spec file"));
         sub->add_option("--scene", scene, "What the renderer has and needs (JSON); selects each variant's features")->check(not_empty("a scene file"));
-        sub->add_option("--targets", targets, "Comma-separated: " + compile::target_list())->capture_default_str();
+        sub->add_option("--targets", targets, "Comma-separated: " + compile::target_list() + " (wgsl needs Node.js: scripts/install-deps.sh)")
+            ->capture_default_str();
         sub->add_option("--out", out, "Output directory")->required()->check(not_empty("a directory path"));
         sub->add_flag("--quiet", quiet, "No progress on stderr");
         sub->add_option("NAME", variant_names, "Variant names (see aogen list); none and no --variants: the default matrix");
@@ -303,6 +366,10 @@ struct generate_command {
             for (const selection& existing : selected) duplicate = duplicate || existing.v == s.v;
             if (!duplicate) selected.push_back(s);
         }
+        std::vector<variant> chosen;
+        for (const selection& s : selected) chosen.push_back(s.v);
+        if (!quiet && g.targets_include(compile::target::wgsl)) std::cerr << "aogen: WGSL through naga and Tint\n";
+        g.prepare_wgsl(chosen);
         for (size_t i = 0; i < selected.size(); ++i) {
             if (!quiet) std::cerr << "aogen: [" << i + 1 << "/" << selected.size() << "] " << to_name(selected[i].v) << "\n";
             g.add(selected[i].v, selected[i].features);

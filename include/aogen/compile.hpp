@@ -23,6 +23,9 @@
 //     hlsl60     HLSL shader model 6.0 (DXC)
 //     msl        Metal Shading Language 2.1 for macOS
 //     msl_ios    Metal Shading Language 2.1 for iOS
+//     wgsl       WGSL for WebGPU, through naga (aogen/wgsl.hpp), validated by naga and Tint;
+//                only from SPIR-V in WebGPU's binding model (separate textures and
+//                samplers: codegen::options::model = binding_model::webgpu)
 //
 // USAGE
 //     #include <aogen/compile.hpp>      // CMake: target_link_libraries(... aogen::compiler)
@@ -121,6 +124,7 @@
 #include "error.hpp"
 #include "names.hpp"
 #include "reflect.hpp"
+#include "wgsl.hpp"
 #include "variant.hpp"
 
 #include <glslang/Public/ResourceLimits.h>
@@ -478,6 +482,20 @@ inline msl_index_map read_msl_indices(const spirv_cross::CompilerMSL& msl)
 
 } // namespace detail
 
+// aogen::error unless `spirv` has a WGSL form: no 16-bit floats, no combined image samplers.
+inline void require_wgsl_input(const std::vector<uint32_t>& spirv, const std::string& name)
+{
+    spirv_cross::Compiler c(spirv);
+    const auto& caps = c.get_declared_capabilities();
+    if (std::find(caps.begin(), caps.end(), spv::CapabilityFloat16) != caps.end())
+        fail(name, "does 16-bit float arithmetic (an fp16 variant), which WGSL has only behind `enable f16;`, the optional "
+                   "shader-f16 feature many WebGPU devices lack",
+             "valid: --targets spv,hlsl,hlsl60,msl,msl_ios for fp16 variants");
+    if (!c.get_shader_resources().sampled_images.empty())
+        fail(name, "uses combined image samplers, which WGSL does not have",
+             "valid: SPIR-V generated with codegen::options::model = binding_model::webgpu");
+}
+
 // SPIRV-Cross: one text target from (validated) SPIR-V. Sets `*entry_point` to the entry
 // point's name in that text and, for the MSL targets, `*msl` to the argument indices
 // SPIRV-Cross assigned. target::spv has no text: an aogen::error.
@@ -490,6 +508,12 @@ inline std::string cross_compile(const std::vector<uint32_t>& spirv, shader_stag
     try {
         switch (t) {
         case target::spv: break;
+        case target::wgsl: {
+            // naga, not SPIRV-Cross (which has no WGSL writer).
+            require_wgsl_input(spirv, name);
+            if (entry_point) *entry_point = "main";
+            return wgsl::from_spirv({{name, stage, spirv}}).front();
+        }
         case target::glsl:
         case target::essl: {
             spirv_cross::CompilerGLSL glsl(spirv);

@@ -67,6 +67,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -84,8 +85,8 @@ namespace aogen::compile {
 using aogen::shader_stage; // defined in variant.hpp, shared with codegen.hpp
 using aogen::shader_stage_from_name;
 
-enum class target { spv, glsl, essl, hlsl50, hlsl60, msl_macos, msl_ios };
-inline constexpr std::array<enum_name<target>, 7> target_names{{
+enum class target { spv, glsl, essl, hlsl50, hlsl60, msl_macos, msl_ios, wgsl };
+inline constexpr std::array<enum_name<target>, 8> target_names{{
     {target::spv, "spv"},
     {target::glsl, "glsl"},
     {target::essl, "essl"},
@@ -93,6 +94,7 @@ inline constexpr std::array<enum_name<target>, 7> target_names{{
     {target::hlsl60, "hlsl60"},
     {target::msl_macos, "msl"},
     {target::msl_ios, "msl_ios"},
+    {target::wgsl, "wgsl"},
 }};
 static_assert(names::distinct(target_names));
 
@@ -554,6 +556,22 @@ inline const buffer_block* find_block(const reflection& refl, std::string_view n
     for (const buffer_block& b : refl.blocks)
         if (b.name == name) return &b;
     return nullptr;
+}
+
+// The block of struct type `name` as a block of its own: the block itself, or the block that
+// wraps such a struct as its only member (naga's SPIR-V wraps every WGSL uniform struct so).
+inline std::optional<buffer_block> find_struct_block(const reflection& refl, std::string_view name)
+{
+    if (const buffer_block* b = find_block(refl, name)) return *b;
+    for (const buffer_block& b : refl.blocks)
+        if (b.members.size() == 1 && b.members[0].type == name && b.members[0].array.empty() && b.members[0].offset == 0) {
+            buffer_block inner = b;
+            inner.name = b.members[0].type;
+            inner.size = b.members[0].size;
+            inner.members = b.members[0].members;
+            return inner;
+        }
+    return std::nullopt;
 }
 
 // The binding at (set, binding); nullptr when there is none.

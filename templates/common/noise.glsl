@@ -14,7 +14,8 @@
 vec2 ao_noise_rotation(ivec2 p)
 {
     ivec2 size = max(textureSize(u_noise, 0), ivec2(1));
-    vec2 r = texelFetch(u_noise, p % size, 0).xy;
+    // Unsigned: p >= 0, and naga (the WGSL target) mis-types GLSL's signed % (OpSMod) of vectors.
+    vec2 r = texelFetch(u_noise, ivec2(uvec2(p) % uvec2(size)), 0).xy;
     float len2 = dot(r, r);
     if (!ao_is_finite(len2) || !(len2 > 1e-12)) return vec2(1.0, 0.0);
     return r * inversesqrt(len2);

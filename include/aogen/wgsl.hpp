@@ -1,0 +1,251 @@
+// aogen/wgsl.hpp — WGSL through naga and Tint: SPIR-V → WGSL, every text validated twice,
+// and WGSL → SPIR-V for the round trip.
+//
+// WHAT
+//   SPIRV-Cross has no WGSL writer. naga (wgpu's shader translator, the npm package naga-wasm)
+//   has, and Tint (Dawn's WGSL compiler, inside the npm package webgpu) is a second, independent
+//   WGSL front end. Both run in Node.js, so this header runs wgsl/aogen_wgsl.mjs — one process
+//   for a whole batch of shaders, over files in a temporary folder:
+//     from_spirv(jobs)   SPIR-V → WGSL with naga; then naga parses and validates that text
+//                        again and Tint compiles it (a compute shader also into a pipeline with
+//                        the bind group layout WebGPU derives). A text either rejects is an
+//                        aogen::error naming the shader, the tool and its message: no WGSL
+//                        leaves here unvalidated.
+//     to_spirv(texts)    WGSL → SPIR-V with naga (what the Vulkan harness runs to execute a
+//                        WGSL text: vulkan/wgsl_round_trip.hpp)
+//   The SPIR-V given to from_spirv must use WebGPU's binding model (separate textures and
+//   samplers: codegen::options::model = binding_model::webgpu); naga's SPIR-V reader rejects
+//   combined image samplers.
+//
+// WHERE THE TOOLS ARE
+//   node: $AOGEN_NODE, else `node` on PATH (Debian 12's nodejs 18 runs both packages).
+//   The script and its node_modules: $AOGEN_WGSL_TOOLS, else the folder CMake compiled in
+//   (AOGEN_WGSL_TOOLS_DIR: the source tree's wgsl/, or the installed share/aogen/wgsl);
+//   scripts/install-deps.sh installs the pinned packages there (npm ci). When either is
+//   missing, the first call fails with one line saying what is missing and how to get it —
+//   every other target works without them. With $AOGEN_WGSL_KEEP set, the temporary folders
+//   (the inputs, outputs and messages of each batch) are left in $TMPDIR for a look.
+//
+// USAGE
+//     std::vector<std::string> wgsl = aogen::wgsl::from_spirv({{"ssao-...-cs.ao.comp", aogen::shader_stage::compute, words}});
+//     std::vector<std::vector<uint32_t>> back = aogen::wgsl::to_spirv({{"ssao-...-cs.ao.comp", aogen::shader_stage::compute, wgsl[0]}});
+#pragma once
+
+#include "error.hpp"
+#include "variant.hpp" // shader_stage
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <dirent.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace aogen::wgsl {
+
+struct spirv_job {
+    std::string name; // names the shader in messages
+    shader_stage stage = shader_stage::compute;
+    std::vector<uint32_t> spirv;
+};
+struct wgsl_job {
+    std::string name;
+    shader_stage stage = shader_stage::compute;
+    std::string wgsl;
+};
+
+// Where node and aogen_wgsl.mjs are (WHERE THE TOOLS ARE).
+struct tools {
+    std::string node;
+    std::string dir; // holds aogen_wgsl.mjs and node_modules/
+};
+
+namespace detail {
+
+inline bool is_file(const std::string& path)
+{
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+inline std::string on_path(const std::string& program)
+{
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/bin:/bin";
+    std::stringstream in(dirs);
+    for (std::string d; std::getline(in, d, ':');)
+        if (!d.empty() && is_file(d + "/" + program) && ::access((d + "/" + program).c_str(), X_OK) == 0) return d + "/" + program;
+    return "";
+}
+
+inline std::string read_all(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+inline void write_all(const std::string& path, const std::string& bytes)
+{
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) fail("wgsl tools", "cannot write " + path, "valid: a writable temporary folder ($TMPDIR)");
+}
+
+// A temporary folder, removed with everything in it when this goes.
+class scratch {
+public:
+    scratch()
+    {
+        const char* tmp = std::getenv("TMPDIR");
+        std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/aogen-wgsl-XXXXXX";
+        std::vector<char> buf(pattern.begin(), pattern.end());
+        buf.push_back('\0');
+        if (!::mkdtemp(buf.data())) fail("wgsl tools", "cannot make a temporary folder in " + pattern + ": " + std::strerror(errno), "valid: a writable $TMPDIR");
+        path_ = buf.data();
+    }
+    ~scratch()
+    {
+        if (std::getenv("AOGEN_WGSL_KEEP")) return; // for debugging the tools: the folder stays
+        if (DIR* d = ::opendir(path_.c_str())) {
+            while (const dirent* e = ::readdir(d))
+                if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0) ::unlink((path_ + "/" + e->d_name).c_str());
+            ::closedir(d);
+        }
+        ::rmdir(path_.c_str());
+    }
+    scratch(const scratch&) = delete;
+    scratch& operator=(const scratch&) = delete;
+    // The path of file `name` in the folder.
+    std::string file(const std::string& name) const { return path_ + "/" + name; }
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+inline std::string id_of(size_t i, shader_stage stage)
+{
+    std::string id = std::to_string(i);
+    return std::string(6 - std::min<size_t>(6, id.size()), '0') + id + "." + file_extension(stage);
+}
+
+// Runs `node aogen_wgsl.mjs <command> <dir>`; an aogen::error unless it exits 0.
+inline void run(const tools& t, const std::string& command, const std::string& dir)
+{
+    const std::string script = t.dir + "/aogen_wgsl.mjs";
+    std::vector<std::string> args{t.node, script, command, dir};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string log = dir + "/stderr.log";
+    const pid_t pid = ::fork();
+    if (pid < 0) fail("wgsl tools", std::string("cannot start node: ") + std::strerror(errno), "valid: a system that can run processes");
+    if (pid == 0) {
+        FILE* err = std::freopen(log.c_str(), "w", stderr);
+        (void)err;
+        ::execv(argv[0], argv.data());
+        std::_Exit(127);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    const std::string said = read_all(log);
+    ::unlink(log.c_str());
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+    std::string first = said.substr(0, said.find('\n'));
+    fail("wgsl tools", "node " + script + " " + command + " failed" + (first.empty() ? "" : ": " + first),
+         "valid: the packages of wgsl/package.json installed (scripts/install-deps.sh)");
+}
+
+inline std::string words_to_bytes(const std::vector<uint32_t>& words)
+{
+    std::string bytes;
+    bytes.reserve(words.size() * 4);
+    for (uint32_t w : words)
+        for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<char>(w >> (8 * i)));
+    return bytes;
+}
+
+inline std::vector<uint32_t> bytes_to_words(const std::string& bytes)
+{
+    std::vector<uint32_t> words(bytes.size() / 4);
+    for (size_t i = 0; i < words.size(); ++i)
+        for (int k = 0; k < 4; ++k) words[i] |= uint32_t(static_cast<unsigned char>(bytes[4 * i + k])) << (8 * k);
+    return words;
+}
+
+// The tool's verdict on one shader: its output, or an aogen::error with its message.
+inline std::string result_of(const scratch& s, const std::string& id, const std::string& output, const std::string& name)
+{
+    const std::string error_file = s.file(id + ".error"), out_file = s.file(id + output);
+    if (is_file(error_file)) {
+        std::string message = read_all(error_file);
+        while (!message.empty() && message.back() == '\n') message.pop_back();
+        throw error(name + ": " + message.substr(0, message.find('\n')) + " (valid: a shader both naga and Tint accept)" +
+                    (message.find('\n') == std::string::npos ? "" : message.substr(message.find('\n'))));
+    }
+    if (!is_file(out_file)) fail(name, "the WGSL tools wrote no result for it", "valid: wgsl/aogen_wgsl.mjs as shipped");
+    return read_all(out_file);
+}
+
+} // namespace detail
+
+// The tools, or an aogen::error saying what is missing (WHERE THE TOOLS ARE).
+inline tools find_tools()
+{
+    tools t;
+    const char* node = std::getenv("AOGEN_NODE");
+    t.node = node && *node ? std::string(node) : detail::on_path("node");
+    if (t.node.empty() || !detail::is_file(t.node))
+        fail("wgsl target", "needs Node.js, and there is no `node` on PATH" + std::string(node && *node ? " (nor at $AOGEN_NODE)" : ""),
+             "valid: Debian's nodejs (scripts/install-deps.sh installs it), or the other targets");
+    const char* dir = std::getenv("AOGEN_WGSL_TOOLS");
+#if defined(AOGEN_WGSL_TOOLS_DIR)
+    t.dir = dir && *dir ? std::string(dir) : std::string(AOGEN_WGSL_TOOLS_DIR);
+#else
+    t.dir = dir && *dir ? std::string(dir) : std::string();
+#endif
+    if (t.dir.empty() || !detail::is_file(t.dir + "/aogen_wgsl.mjs"))
+        fail("wgsl target", "needs aogen's WGSL tools, and there is no aogen_wgsl.mjs in " + (t.dir.empty() ? std::string("(no folder set)") : t.dir),
+             "valid: $AOGEN_WGSL_TOOLS naming the wgsl/ folder of aogen's source tree");
+    for (const char* package : {"naga-wasm", "webgpu"})
+        if (!detail::is_file(t.dir + "/node_modules/" + package + "/package.json"))
+            fail("wgsl target", "needs the npm package " + std::string(package) + ", which is not installed in " + t.dir + "/node_modules",
+                 "valid: `npm ci` in " + t.dir + " (scripts/install-deps.sh does it)");
+    return t;
+}
+
+// SPIR-V (WebGPU's binding model) → WGSL, each text validated by naga and Tint.
+inline std::vector<std::string> from_spirv(const std::vector<spirv_job>& jobs, const tools& t = find_tools())
+{
+    detail::scratch s;
+    for (size_t i = 0; i < jobs.size(); ++i)
+        detail::write_all(s.file(detail::id_of(i, jobs[i].stage) + ".spv"), detail::words_to_bytes(jobs[i].spirv));
+    detail::run(t, "from-spirv", s.path());
+    detail::run(t, "tint", s.path()); // a process of its own (aogen_wgsl.mjs says why)
+    std::vector<std::string> out;
+    for (size_t i = 0; i < jobs.size(); ++i) out.push_back(detail::result_of(s, detail::id_of(i, jobs[i].stage), ".wgsl", jobs[i].name));
+    return out;
+}
+
+// WGSL → SPIR-V with naga.
+inline std::vector<std::vector<uint32_t>> to_spirv(const std::vector<wgsl_job>& jobs, const tools& t = find_tools())
+{
+    detail::scratch s;
+    for (size_t i = 0; i < jobs.size(); ++i) detail::write_all(s.file(detail::id_of(i, jobs[i].stage) + ".wgsl"), jobs[i].wgsl);
+    detail::run(t, "to-spirv", s.path());
+    std::vector<std::vector<uint32_t>> out;
+    for (size_t i = 0; i < jobs.size(); ++i)
+        out.push_back(detail::bytes_to_words(detail::result_of(s, detail::id_of(i, jobs[i].stage), ".spv.out", jobs[i].name)));
+    return out;
+}
+
+} // namespace aogen::wgsl
