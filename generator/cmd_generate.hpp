@@ -23,6 +23,7 @@
 #include <aogen/codegen.hpp>
 #include <aogen/compile.hpp>
 #include <aogen/declare.hpp>
+#include <aogen/emitted.hpp>
 #include <aogen/matrix.hpp>
 #include <aogen/quality.hpp>
 #include <aogen/selection.hpp>
@@ -128,9 +129,9 @@ public:
         std::vector<std::string> declared_structs;
         nlohmann::ordered_json passes = nlohmann::ordered_json::array();
         const std::vector<codegen::shader_source> sources = codegen::generate(v);
-        const std::vector<codegen::shader_source> essl_sources = codegen::generate(v, essl_options());
+        const std::vector<codegen::shader_source> essl_sources = codegen::generate(v, options_for(compile::target::essl));
         const std::vector<codegen::shader_source> wgsl_sources =
-            wants(compile::target::wgsl) ? codegen::generate(v, wgsl_options()) : std::vector<codegen::shader_source>{};
+            wants(compile::target::wgsl) ? codegen::generate(v, options_for(compile::target::wgsl)) : std::vector<codegen::shader_source>{};
         for (size_t i = 0; i < sources.size(); ++i) {
             const codegen::shader_source& s = sources[i];
             const shader_stage stage = s.stage;
@@ -233,24 +234,21 @@ public:
     void prepare_wgsl(const std::vector<variant>& variants)
     {
         if (!wants(compile::target::wgsl)) return;
-        std::vector<wgsl::spirv_job> jobs;
-        std::vector<std::string> keys;
+        std::vector<codegen::shader_source> unique; // by GLSL text (their names are the first variant's)
+        std::vector<std::vector<uint32_t>> spirv;
         for (const variant& v : variants)
-            for (const codegen::shader_source& s : codegen::generate(v, wgsl_options())) {
-                if (wgsl_.count(s.glsl) || std::find(keys.begin(), keys.end(), s.glsl) != keys.end()) continue;
-                const std::vector<uint32_t>& spirv = compiled_once(s.glsl, s.stage, s.name, {compile::target::spv}).spirv;
-                compile::require_wgsl_input(spirv, s.name); // an fp16 variant is refused by name, with the reason
-                jobs.push_back({s.name, s.stage, spirv});
-                keys.push_back(s.glsl);
+            for (const codegen::shader_source& s : codegen::generate(v, options_for(compile::target::wgsl))) {
+                if (std::any_of(unique.begin(), unique.end(), [&](const codegen::shader_source& u) { return u.glsl == s.glsl; })) continue;
+                unique.push_back(s);
+                spirv.push_back(compiled_once(s.glsl, s.stage, s.name, {compile::target::spv}).spirv);
             }
-        if (jobs.empty()) return;
-        const wgsl::tools tools = wgsl::find_tools();
-        const std::vector<std::string> texts = wgsl::from_spirv(jobs, tools);
+        if (unique.empty()) return;
+        const std::vector<std::string> texts = wgsl_texts(unique, spirv); // an fp16 variant is refused by name, with the reason
         std::vector<wgsl::wgsl_job> back;
-        for (size_t i = 0; i < jobs.size(); ++i) back.push_back({jobs[i].name, jobs[i].stage, texts[i]});
-        const std::vector<std::vector<uint32_t>> spirv = wgsl::to_spirv(back, tools);
-        for (size_t i = 0; i < jobs.size(); ++i)
-            wgsl_[keys[i]] = {texts[i], compile::reflect(spirv[i], jobs[i].stage, jobs[i].name + " (naga's SPIR-V of its WGSL)")};
+        for (size_t i = 0; i < unique.size(); ++i) back.push_back({unique[i].name, unique[i].stage, texts[i]});
+        const std::vector<std::vector<uint32_t>> naga_spirv = wgsl::to_spirv(back);
+        for (size_t i = 0; i < unique.size(); ++i)
+            wgsl_[unique[i].glsl] = {texts[i], compile::reflect(naga_spirv[i], unique[i].stage, unique[i].name + " (naga's SPIR-V of its WGSL)")};
     }
 
 private:
@@ -260,24 +258,6 @@ private:
         compile::reflection refl; // of naga's SPIR-V of the text
     };
     std::map<std::string, translated_wgsl> wgsl_; // by WebGPU-model GLSL source
-
-    // ESSL 3.10 has no r8 image format, so the ESSL text of a compute pass comes from a
-    // source whose output image is rgba8 (the AO in .r); every other target keeps r8.
-    static codegen::options essl_options()
-    {
-        codegen::options o;
-        o.output_format = "rgba8";
-        return o;
-    }
-
-    // WGSL: WebGPU's binding model, and an rgba8 output (core WebGPU has no r8unorm storage).
-    static codegen::options wgsl_options()
-    {
-        codegen::options o;
-        o.model = binding_model::webgpu;
-        o.output_format = "rgba8";
-        return o;
-    }
 
     bool wants(compile::target t) const { return targets_include(t); }
 

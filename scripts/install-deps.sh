@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages aogen builds and tests with, skipping those already
-# installed. Runs as root (or through sudo when it is there). Debian packages only.
+# installed, then the WGSL target's npm packages (wgsl/package-lock.json: naga-wasm and
+# webgpu at pinned versions) into wgsl/node_modules. Runs as root (or through sudo when it is
+# there). Debian packages and the npm registry only; nothing is fetched after install.
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config
@@ -26,11 +29,26 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+# The WGSL target runs naga and Tint in Node.js: Debian 12's nodejs (18) and npm run both
+# packages (their "engines" field asks for Node 24, which only their build needs). A machine
+# that already has a node and npm of 18 or later (another distribution's) keeps them.
+node_major=$(node --version 2>/dev/null | sed -n 's/^v\([0-9]*\).*/\1/p')
+if [ -z "$node_major" ] || [ "$node_major" -lt 18 ] || ! command -v npm >/dev/null; then
+  missing+=(nodejs npm)
+fi
 
-as_root=()
-[ "$(id -u)" -eq 0 ] || as_root=(sudo)
-echo "install-deps: installing ${missing[*]}" >&2
-export DEBIAN_FRONTEND=noninteractive
-"${as_root[@]}" apt-get update -q
-"${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -gt 0 ]; then
+  as_root=()
+  [ "$(id -u)" -eq 0 ] || as_root=(sudo)
+  echo "install-deps: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  "${as_root[@]}" apt-get update -q
+  "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+# The npm packages, exactly as wgsl/package-lock.json pins them, unless npm finds them all
+# installed at the versions wgsl/package.json names.
+if ! (cd wgsl && npm ls --all >/dev/null 2>&1); then
+  echo "install-deps: installing the WGSL tools' npm packages into wgsl/node_modules" >&2
+  (cd wgsl && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error)
+fi

@@ -1,10 +1,10 @@
-// aogen_target_check — every emitted target executed against the SPIR-V (issue 13): each
+// aogen_target_check — every emitted target executed against the SPIR-V (issues 13, 19): each
 // variant's GLSL 450 on OpenGL 4.5 and ESSL (310 compute, 300 fragment) on OpenGL ES 3.2
-// (aogen::gl, llvmpipe), and its SM 5.0 and 6.0 HLSL compiled back by glslang and run on the
-// Vulkan harness, on the G-buffers of built-in scenes, each compared per pixel with the
-// variant's SPIR-V run on the same bytes.
+// (aogen::gl, llvmpipe), its SM 5.0 and 6.0 HLSL compiled back by glslang and its WGSL
+// translated back by naga, both run on the Vulkan harness, on the G-buffers of built-in
+// scenes, each compared per pixel with the variant's SPIR-V run on the same bytes.
 //
-//   aogen_target_check [--variants NAME,...|spec.json] [--scenes a,b,c] [--size WxH]
+//   aogen_target_check [--variants NAME,...] [--targets glsl,essl,hlsl,hlsl60,wgsl] [--scenes a,b,c] [--size WxH]
 //
 // Default: the default matrix (compute and fragment variants) on crease, room and engine at
 // 320×180. Prints, per target, the variant × scene runs, how many were bit-identical, the
@@ -20,6 +20,7 @@
 #include <aogen/gl/chain.hpp>
 #include <aogen/matrix.hpp>
 #include <aogen/vulkan/hlsl_round_trip.hpp>
+#include <aogen/vulkan/wgsl_round_trip.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -42,10 +43,11 @@ struct tally {
 int main(int argc, char** argv)
 {
     CLI::App app{"aogen_target_check: every emitted target executed against the SPIR-V"};
-    std::string variants, scenes = "crease,room,engine", size = "320x180";
+    std::string variants, scenes = "crease,room,engine", size = "320x180", targets = "glsl,essl,hlsl,hlsl60,wgsl";
     app.add_option("--variants", variants, "canonical names, comma-separated (default: the default matrix's compute variants)");
     app.add_option("--scenes", scenes, "built-in scenes or scene files")->capture_default_str();
     app.add_option("--size", size, "WxH of every scene")->capture_default_str();
+    app.add_option("--targets", targets, "the targets to run, comma-separated")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     try {
         int w = 0, h = 0;
@@ -53,13 +55,30 @@ int main(int argc, char** argv)
         std::vector<aogen::variant> vs;
         if (variants.empty()) vs = aogen::default_matrix();
         else for (const std::string& n : aogen_report::comma_list(variants)) vs.push_back(aogen::variant_from_name(n));
+        namespace cc = aogen::compile;
+        const std::vector<cc::target> checkable{cc::target::glsl, cc::target::essl, cc::target::hlsl50, cc::target::hlsl60, cc::target::wgsl};
+        const char* const names[] = {"glsl (OpenGL 4.5)", "essl (OpenGL ES 3.2)", "hlsl sm50 (glslang round trip)", "hlsl sm60 (glslang round trip)",
+                                     "wgsl (naga round trip)"};
+        std::vector<int> chosen; // indices into checkable
+        for (const std::string& t : aogen_report::comma_list(targets)) {
+            const cc::target target = cc::target_from_name(t, "--targets");
+            const auto at = std::find(checkable.begin(), checkable.end(), target);
+            if (at == checkable.end()) aogen::fail("--targets", t + " is not run against the SPIR-V here", "valid: glsl, essl, hlsl, hlsl60, wgsl");
+            chosen.push_back(int(at - checkable.begin()));
+        }
+        const auto wanted = [&](int k) { return std::find(chosen.begin(), chosen.end(), k) != chosen.end(); };
         aogen::vulkan::context vk(aogen::vulkan::device_options{});
         aogen::gl::context gl(aogen::gl::api::opengl), es(aogen::gl::api::opengl_es);
         std::cerr << "aogen_target_check: " << vk.device_name() << "; " << gl.version() << "; " << es.version() << "\n";
-        aogen::codegen::options rgba8;
-        rgba8.output_format = "rgba8";
-        const char* const names[] = {"glsl (OpenGL 4.5)", "essl (OpenGL ES 3.2)", "hlsl sm50 (glslang round trip)", "hlsl sm60 (glslang round trip)"};
-        tally t[4];
+        const aogen::codegen::options rgba8 = aogen::options_for(cc::target::essl);
+        // WGSL: every variant's texts translated in one batch, up front. fp16 variants have no
+        // WGSL form (compile.hpp refuses them), like GLSL and ESSL.
+        std::vector<aogen::variant> wgsl_variants;
+        for (const aogen::variant& v : vs)
+            if (!v.fp16) wgsl_variants.push_back(v);
+        std::optional<aogen::vulkan::wgsl_round_trips> wgsl;
+        if (wanted(4)) wgsl.emplace(wgsl_variants);
+        tally t[5];
         for (aogen::scenes::scene s : aogen_report::load_scenes(scenes)) {
             s.camera.width = w, s.camera.height = h;
             aogen_report::require_radius_works(s);
@@ -79,13 +98,14 @@ int main(int argc, char** argv)
                 // refuses them), and glslang reads their HLSL's min16float as 32-bit floats
                 // (and has no min16float3x3), so a round trip would not run their arithmetic.
                 const auto run = [&](int k) -> std::optional<std::vector<float>> {
-                    if (v.fp16) return std::nullopt;
+                    if (v.fp16 || !wanted(k)) return std::nullopt;
+                    if (k == 4) return aogen::vulkan::bound_chain(vk, *wgsl->passes(vk, v), gbuffers.gpu(v), in, tw, th).run_once().ao;
                     if (k == 0) return aogen::gl::run(gl, v, aogen::emitted_texts(v, aogen::compile::target::glsl), gbuffers.host(v), in).ao;
                     if (k == 1) return aogen::gl::run(es, v, aogen::emitted_texts(v, aogen::compile::target::essl, rgba8), gbuffers.host(v), in, rgba8).ao;
                     const aogen::compile::target hlsl = k == 2 ? aogen::compile::target::hlsl50 : aogen::compile::target::hlsl60;
                     return aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, v, hlsl), gbuffers.gpu(v), in, tw, th).run_once().ao;
                 };
-                for (int k = 0; k < 4; ++k) {
+                for (int k = 0; k < 5; ++k) {
                     const std::optional<std::vector<float>> got = run(k);
                     if (!got) continue;
                     const aogen::ao_difference d = aogen::difference_of(*got, expected);
@@ -99,7 +119,7 @@ int main(int argc, char** argv)
         bool ok = true;
         std::cout << "| target | variant × scene runs | of them fragment | bit-identical | over 1/255 | largest difference | where |\n"
                      "|---|---:|---:|---:|---:|---:|---|\n";
-        for (int k = 0; k < 4; ++k) {
+        for (int k : chosen) {
             std::cout << "| " << names[k] << " | " << t[k].runs << " | " << t[k].fragment << " | " << t[k].exact << " | " << t[k].over << " | "
                       << t[k].worst * 255 << "/255 | " << (t[k].worst > 0 ? "`" + t[k].worst_variant + "`" : "—") << " |\n";
             ok = ok && t[k].over == 0;

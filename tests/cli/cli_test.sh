@@ -159,6 +159,31 @@ import json; assert json.load(open('$work/q/manifest.json'))['variants'][0]['qua
   check "an fp16 variant's HLSL is validated, not round-tripped (glslang reads min16float as 32-bit)" python3 -c "
 import json; assert json.load(open('$work/f16/manifest.json'))['variants'][0]['verification'] == {'spv': 'executed', 'hlsl': 'validated'}
 "
+  "$aogen" generate --quiet --out "$work/wgsl" --targets spv,wgsl $v1 $v2
+  check "WGSL: a file per shader, WebGPU's bindings in the manifest, round_tripped" python3 -c "
+import json, os; m = json.load(open('$work/wgsl/manifest.json'))
+cs, fs = m['variants']
+assert cs['verification'] == {'spv': 'executed', 'wgsl': 'round_tripped'}, cs['verification']
+ao = cs['passes'][0]
+assert ao['outputs']['wgsl'] == '$v1/ao.comp.wgsl' and ao['entry_points']['wgsl'] == 'main'
+text = open(os.path.join('$work/wgsl', ao['outputs']['wgsl'])).read()
+assert '@compute' in text and 'texture_storage_2d<rgba8unorm, write>' in text.replace(',write', ', write'), text[:400]
+b = {(x['binding'], x['kind']) for x in ao['wgsl_bindings']}
+assert b == {(0, 'uniform_buffer'), (1, 'sampled_image'), (2, 'sampler'), (3, 'sampled_image'), (4, 'sampled_image'), (5, 'storage_image')}, b
+up = cs['passes'][3]
+assert {(x['binding'], x['kind']) for x in up['wgsl_bindings']} >= {(3, 'sampled_image'), (4, 'sampler')}, up['wgsl_bindings']
+assert [p['outputs']['wgsl'].split('/')[-1] for p in fs['passes']] == ['ao.vert.wgsl', 'ao.frag.wgsl', 'blur_box.vert.wgsl', 'blur_box.frag.wgsl']
+"
+  check "the header has the WGSL binding numbers" grep -q "ao_comp_wgsl_binding_u_depth_sampler = 2;" "$work/wgsl/aogen_variants.hpp"
+  expect_error "an fp16 variant has no WGSL" "fp16.ao.comp: does 16-bit float arithmetic.*shader-f16" generate --targets wgsl --out "$work/no16" gtao-3x3-half-bilateral-gbufworld-std-persp-cs-fp16
+  check "and nothing was written" test ! -e "$work/no16"
+  if AOGEN_NODE=/nonexistent/node "$aogen" generate --quiet --targets wgsl --out "$work/nonode" $v1 2>"$work/nonode.err"; then
+    echo "FAILED: wgsl without Node.js exited 0"; failures=$((failures + 1))
+  fi
+  check "without Node.js, wgsl fails in one line naming what is missing" grep -q "^aogen: wgsl target: needs Node.js" "$work/nonode.err"
+  check "... and nothing was written" test ! -e "$work/nonode"
+  AOGEN_NODE=/nonexistent/node "$aogen" generate --quiet --targets spv,glsl,hlsl --out "$work/nonode_other" $v1
+  check "... while every other target works without it" test -s "$work/nonode_other/$v1/ao.comp.sm50.hlsl"
   printf '#include "aogen_variants.hpp"\nstatic_assert(aogen_variants::%s::ao_comp_spv[0] == 0x07230203u);\n' "${v1//-/_}" >"$work/use.cpp"
   check "the header compiles" c++ -std=c++17 -fsyntax-only -I"$work/gen" "$work/use.cpp"
   touch "$work/marker"

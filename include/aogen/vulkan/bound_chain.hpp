@@ -6,7 +6,7 @@
 //   fetch-floor kernels), an uploaded G-buffer (gpu_gbuffer, shared with other chains) and
 //   the chain's own inputs (chain_inputs: uniform bytes per pass, noise tile), and makes,
 //   once, everything a frame loop keeps: device-local uniform buffers and noise image, one
-//   R8_UNORM output image per pass (pass i writes output i, pass i + 1 samples it), the
+//   output image per pass (R8_UNORM, or R8G8B8A8_UNORM for rgba8 passes: passes.hpp) (pass i writes output i, pass i + 1 samples it), the
 //   framebuffers of fragment passes, one descriptor set per pass. Then:
 //     record(cb, timestamps)  records the whole chain into a command buffer, as many times
 //                             as the caller likes (timing.hpp records it hundreds of times
@@ -136,7 +136,8 @@ public:
         const image& last = outputs_.back();
         barrier(cb, last, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
                 VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
-        const buffer ao = sc.read_back(cb, last, width(), height(), 1);
+        const size_t texel = texel_bytes(passes_.output_format()); // the AO in the first byte of each texel
+        const buffer ao = sc.read_back(cb, last, width(), height(), texel);
         barrier(cb, last, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
                 VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
         const buffer counts = has_raw_ ? count_raw(sc, cb) : buffer{};
@@ -146,7 +147,7 @@ public:
         out.width = width(), out.height = height();
         out.ao.resize(static_cast<size_t>(width()) * height());
         const auto* px = static_cast<const uint8_t*>(ao.mapped);
-        for (size_t i = 0; i < out.ao.size(); ++i) out.ao[i] = px[i] / 255.0f;
+        for (size_t i = 0; i < out.ao.size(); ++i) out.ao[i] = px[i * texel] / 255.0f;
         for (size_t i = 0; i < passes_.size(); ++i) out.passes.push_back(names::name_of(pass_kind_names, passes_[i].kind, "pass"));
         if (pool) out.pass_ms = pass_ms(read_queries(ctx_, pool, queries()), 0);
         if (has_raw_)
@@ -183,7 +184,7 @@ private:
         const output_use use = passes_.output();
         for (size_t i = 0; i < passes_.size(); ++i) {
             const auto [w, h] = sizes_[i];
-            outputs_.push_back(scope_.make_image(w, h, ao_format,
+            outputs_.push_back(scope_.make_image(w, h, passes_.output_format(),
                                                  use.usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT));
             clear_output(cb, outputs_.back(), 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
             framebuffers_.push_back(passes_.make_framebuffer(scope_, outputs_.back(), w, h));

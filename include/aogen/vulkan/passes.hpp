@@ -42,8 +42,21 @@
 
 namespace aogen::vulkan {
 
-// The AO images between passes and at the end: one 8-bit unorm channel.
+// The AO images between passes and at the end: one 8-bit unorm channel — or, for passes
+// generated with codegen::options::output_format "rgba8" (WebGPU and OpenGL ES have no r8
+// storage format), four, the AO in the first.
 inline constexpr VkFormat ao_format = VK_FORMAT_R8_UNORM;
+
+// The image format of a compute pass's output format qualifier; the harness reads back r8
+// and rgba8 only.
+inline VkFormat image_format_of(const std::string& qualifier)
+{
+    if (qualifier == "r8") return VK_FORMAT_R8_UNORM;
+    if (qualifier == "rgba8") return VK_FORMAT_R8G8B8A8_UNORM;
+    throw error("vulkan: an output image in format " + qualifier + " (valid: r8, rgba8, the formats the harness reads back)");
+}
+
+inline size_t texel_bytes(VkFormat f) { return f == VK_FORMAT_R8G8B8A8_UNORM ? 4 : 1; }
 
 struct pass_pipeline {
     pass_kind kind = pass_kind::ao;
@@ -106,6 +119,8 @@ public:
     const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
     bool fragment() const { return stage_ == pipeline_stage::fragment; }
     const std::string& name() const { return name_; }
+    // The format of every pass's output image: its output's (ao_format for fragment passes).
+    VkFormat output_format() const { return output_format_; }
 
     // Where the passes read their inputs (uploads and the previous pass's output).
     VkPipelineStageFlags reader_stage() const
@@ -170,6 +185,12 @@ private:
                 continue;
             }
             require_storage_in_fragment(s);
+            for (const codegen::resource& r : s.resources)
+                if (r.role == resource_role::output) {
+                    const VkFormat f = image_format_of(r.format);
+                    if (passes_.empty()) output_format_ = f;
+                    else if (f != output_format_) throw error("vulkan: " + s.name + " writes " + r.format + ", another pass of " + name_ + " another format (valid: one output format per chain)");
+                }
             passes_.push_back({s.pass, s.resources});
             pass_pipeline& p = passes_.back();
             make_layouts(p);
@@ -349,6 +370,7 @@ private:
     context& ctx_;
     std::string name_;
     pipeline_stage stage_;
+    VkFormat output_format_ = ao_format;
     int workgroup_x_, workgroup_y_;
     std::vector<pass_pipeline> passes_;
     std::vector<VkShaderModule> modules_; // every module, the shared vertex shader once

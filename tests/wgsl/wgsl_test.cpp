@@ -1,0 +1,290 @@
+// The WGSL target (issue 19): every emitted WGSL text is naga's translation of the variant's
+// WebGPU-model SPIR-V, validated by naga and by Tint; translated back to SPIR-V by naga and run
+// under the variant's own passes on the Vulkan harness, it gives the SPIR-V's AO bit for bit.
+// Oracles: naga's and Tint's front ends and validators, naga's own struct layouter (each WGSL
+// uniform struct naga emits, and aogen's WGSL declaration of it, read back through naga's
+// SPIR-V), the SPIR-V run, and seed 004's shader. Two planted faults — a wrong binding, a
+// changed constant — are permanent tests: the comparison must see them.
+#include "vulkan/harness.hpp"
+
+#include <aogen_report/settings.hpp>
+#include <aogen_scenes/gbuffer.hpp>
+
+#include <aogen/ao_difference.hpp>
+#include <aogen/emitted.hpp>
+#include <aogen/uniforms.hpp>
+#include <aogen/vulkan/wgsl_round_trip.hpp>
+
+#include <iostream>
+#include <regex>
+
+using namespace aogen;
+using namespace aogen_test;
+
+namespace {
+
+// The report's ray-cast `crease` scene at 160 × 90, as aogen_report renders it for `v`.
+struct ray_cast_crease {
+    scenes::scene scene = [] {
+        scenes::scene s = scenes::builtin_scene("crease");
+        s.camera.width = 160, s.camera.height = 90;
+        return s;
+    }();
+    std::unique_ptr<truth::scene> tracer = scenes::make_tracer(scene);
+
+    vulkan::gbuffer for_variant(const variant& v) const
+    {
+        scenes::gbuffer_options go;
+        go.use_scene_normals = false;
+        go.face_camera = false;
+        go.normals = v.normals == normal_source::gbuffer_view ? scenes::normal_space::view : scenes::normal_space::world;
+        return scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(scene, v), *tracer, go));
+    }
+};
+
+// `passes` (a WGSL round trip) against `v`'s SPIR-V on G-buffer `g` with settings `s`.
+ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipelines& passes, const variant& v, const vulkan::gbuffer& g,
+                            const vulkan::chain_settings& s)
+{
+    const vulkan::gpu_gbuffer gpu(ctx, g);
+    const auto [tw, th] = target_size(v, g.width, g.height);
+    const vulkan::chain_result got = vulkan::bound_chain(ctx, passes, gpu, inputs_for(v, s, tw, th), tw, th).run_once();
+    const vulkan::chain_result expected = vulkan::chain(ctx, v).run(g, s);
+    REQUIRE(got.width == expected.width);
+    REQUIRE(got.height == expected.height);
+    // The crease is occluded: the comparison is not between two blank images.
+    CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f);
+    return difference_of(got.ao, expected.ao);
+}
+
+// A block as naga lays it out, read from naga's SPIR-V of a WGSL text.
+compile::buffer_block naga_block(const std::string& wgsl, shader_stage stage, const std::string& block)
+{
+    const std::vector<uint32_t> words = wgsl::to_spirv({{block, stage, wgsl}}).front();
+    const std::optional<compile::buffer_block> b = compile::find_struct_block(compile::reflect(words, stage, block), block);
+    REQUIRE(b);
+    return *b;
+}
+
+// Names, offsets and sizes, member by member (nested structs too).
+void require_same_members(const std::vector<compile::block_member>& a, const std::vector<compile::block_member>& b)
+{
+    REQUIRE(a.size() == b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        INFO("member " << a[i].name);
+        CHECK(a[i].name == b[i].name);
+        CHECK(a[i].type == b[i].type);
+        CHECK(a[i].offset == b[i].offset);
+        CHECK(a[i].size == b[i].size);
+        CHECK(a[i].array == b[i].array);
+        CHECK(a[i].array_stride == b[i].array_stride);
+        require_same_members(a[i].members, b[i].members);
+    }
+}
+
+// A compute shader that declares `declaration` (a WGSL uniform struct and its variable) and
+// reads it, so that naga keeps it.
+std::string shader_using(const std::string& declaration, const std::string& instance)
+{
+    return declaration + "\n@compute @workgroup_size(1)\nfn main() {\n    _ = " + instance + ";\n}\n";
+}
+
+// `text` with the variable `name` moved to binding `binding` (a planted fault).
+std::string rebind(const std::string& text, const std::string& name, uint32_t binding)
+{
+    const std::string moved =
+        std::regex_replace(text, std::regex("@binding\\(\\d+\\)(\\s*var(<[a-z_, ]*>)? " + name + ":)"), "@binding(" + std::to_string(binding) + ")$1");
+    REQUIRE(moved != text); // the mutant really is one
+    return moved;
+}
+
+// `text` with the first match of `from` replaced by `to` (a planted fault).
+std::string replace_first(const std::string& text, const std::string& from, const std::string& to)
+{
+    const size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.substr(0, at) + to + text.substr(at + from.size());
+}
+
+// The index of pass `pass`'s compute or fragment shader among `v`'s shaders.
+size_t shader_index(const variant& v, pass_kind pass)
+{
+    const std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
+    for (size_t i = 0; i < sources.size(); ++i)
+        if (sources[i].pass == pass && sources[i].stage != shader_stage::vertex) return i;
+    FAIL("no such pass");
+    return 0;
+}
+
+} // namespace
+
+TEST_CASE("wgsl: the emitted WGSL, validated by naga and Tint and round-tripped through naga, gives the SPIR-V's AO bit for bit")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    std::vector<variant> variants;
+    for (const char* name : emitted_target_variants) variants.push_back(variant_from_name(name));
+    vulkan::wgsl_round_trips trips(variants); // translation and both validators: throws on any refusal
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gbuffer analytic = crease(W, H, 0.6f, proj);
+    const ray_cast_crease scene;
+    for (const variant& v : variants) {
+        INFO(to_name(v));
+        const std::unique_ptr<vulkan::pass_pipelines> passes = trips.passes(*ctx, v);
+        for (const std::string& text : trips.texts(v)) CHECK((text.find("@group(0)") != std::string::npos || text.find("@vertex") != std::string::npos));
+        const ao_difference a = against_spirv(*ctx, *passes, v, analytic, settings_for(proj));
+        const ao_difference r = against_spirv(*ctx, *passes, v, scene.for_variant(v), aogen_report::default_settings(v, scene.scene));
+        std::cout << "wgsl round trip " << to_name(v) << ": analytic crease " << a.identical << " of " << a.pixels << ", ray-cast crease "
+                  << r.identical << " of " << r.pixels << " pixels bit-identical\n";
+        CHECK(a.bit_identical());
+        CHECK(r.bit_identical());
+    }
+    require_clean(*ctx);
+}
+
+TEST_CASE("wgsl: a planted wrong binding and a planted changed constant in the WGSL are seen by the round trip")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gbuffer g = crease(W, H, 0.6f, proj);
+    // The AO pass reads the noise tile where the normals belong and the normals where the
+    // noise does (their bindings swapped): both validators accept it, the image is wrong.
+    {
+        const variant v = variant_from_name("gtao-2x3-half-noblur-gbufworld-std-persp-cs-nearest");
+        std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+        std::string& ao = texts[shader_index(v, pass_kind::ao)];
+        ao = rebind(ao, "u_normals", binding_of(pass_family::ao, resource_role::noise, binding_model::webgpu));
+        ao = rebind(ao, "u_noise", binding_of(pass_family::ao, resource_role::normals, binding_model::webgpu));
+        CHECK_FALSE(against_spirv(*ctx, *vulkan::wgsl_passes(*ctx, v, texts), v, g, settings_for(proj)).bit_identical());
+    }
+    // The bilateral blur's centre weight 0.196 (seed 000) read as 0.2.
+    {
+        const variant v = variant_from_name("ssao-s16-full-bilateral-gbufworld-std-persp-cs");
+        std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+        std::string& blur = texts[shader_index(v, pass_kind::blur_x)];
+        blur = replace_first(blur, "0.196", "0.2");
+        CHECK_FALSE(against_spirv(*ctx, *vulkan::wgsl_passes(*ctx, v, texts), v, g, settings_for(proj)).bit_identical());
+    }
+    // And the unmutated texts through the same path are bit-identical: the check can pass.
+    {
+        const variant v = variant_from_name("ssao-s16-full-bilateral-gbufworld-std-persp-cs");
+        CHECK(against_spirv(*ctx, *vulkan::wgsl_passes(*ctx, v, emitted_texts(v, compile::target::wgsl)), v, g, settings_for(proj)).bit_identical());
+    }
+    require_clean(*ctx);
+}
+
+TEST_CASE("wgsl: every uniform block's WGSL declaration is the struct naga emits, member by member")
+{
+    // The blocks the shaders declare, as naga emits them in a variant's WGSL, against aogen's
+    // own WGSL declaration of the block (declare.hpp) — both read back through naga's layouter.
+    const struct {
+        const char* variant;
+        pass_kind pass;
+        layout::block_desc block;
+    } cases[] = {
+        {"ssao-s16-full-noblur-gbufworld-std-persp-cs", pass_kind::ao, uniforms::ssao_block(16)},
+        {"ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004", pass_kind::ao, uniforms::ssao_block(64)},
+        {"ssao-s8-full-noblur-gbufworld-std-persp-cs", pass_kind::ao, uniforms::ssao_block(8)},
+        {"gtao-2x3-full-noblur-gbufworld-std-persp-cs", pass_kind::ao, uniforms::gtao_block()},
+        {"vbao-3x3-full-noblur-gbufworld-std-persp-cs", pass_kind::ao, uniforms::vbao_block()},
+        {"gtao-2x3-half-bilateral-gbufworld-std-persp-cs", pass_kind::blur_x, uniforms::blur_block()},
+    };
+    for (const auto& c : cases) {
+        INFO(c.variant << " " << c.block.root.name);
+        const variant v = variant_from_name(c.variant);
+        const std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
+        const std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+        size_t k = 0;
+        while (sources[k].pass != c.pass || sources[k].stage == shader_stage::vertex) ++k;
+        const compile::buffer_block emitted = naga_block(texts[k], sources[k].stage, c.block.root.name);
+        const layout::struct_layout l = layout::compute(c.block, layout::rules::wgsl_uniform);
+        layout::declaration_options o;
+        o.instance = "u";
+        const compile::buffer_block declared =
+            naga_block(shader_using(layout::declare(l, layout::language::wgsl, o), "u"), shader_stage::compute, c.block.root.name);
+        require_same_members(declared.members, emitted.members);
+        CHECK(declared.size == emitted.size);
+        compile::check_layout(emitted, l); // and both are aogen's layout engine's offsets
+    }
+}
+
+TEST_CASE("wgsl: seed 004's variant has the seed's texture and sampler types, its SsaoUniform offsets, and says where its bindings differ")
+{
+    const variant v = variant_from_name("ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004"); // the point-cloud viewer's shader
+    const std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
+    const std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+    size_t k = 0;
+    while (sources[k].pass != pass_kind::ao || sources[k].stage != shader_stage::fragment) ++k;
+    const std::string& ao = texts[k];
+    INFO(ao.substr(0, 2000));
+    const auto declares = [&](const std::string& pattern) { return std::regex_search(ao, std::regex(pattern)); };
+    // Seed 004: @binding(0) depth_tex: texture_depth_2d, @binding(1) depth_samp: sampler,
+    // @binding(2) noise_tex: texture_2d<f32>, @binding(3) noise_samp: sampler,
+    // @binding(4) kernel: array<vec4<f32>> (storage), @binding(5) params: SsaoUniform.
+    // The same: the depth is a texture with its sampler at the next binding, the noise tile a
+    // float texture, everything in group 0, a fragment entry point writing one f32.
+    CHECK(declares("@group\\(0\\) @binding\\(1\\)\\s*var u_depth_texture: texture_2d<f32>;"));
+    CHECK(declares("@group\\(0\\) @binding\\(2\\)\\s*var u_depth_sampler: sampler;"));
+    CHECK(declares("@group\\(0\\) @binding\\(4\\)\\s*var u_noise: texture_2d<f32>;"));
+    CHECK(declares("@fragment\\s*fn main\\("));
+    CHECK(declares("-> @location\\(0\\) f32"));
+    // Where it differs, and why:
+    // - the uniform block is binding 0, as in every aogen pass of both binding models
+    //   (bindings.hpp), so one bind group layout prefix serves the AO and filter passes;
+    CHECK(declares("@group\\(0\\) @binding\\(0\\)\\s*var<uniform> u: SsaoUniforms;"));
+    // - the depth is texture_2d<f32>, not texture_depth_2d: the same depth32float texture binds
+    //   to either (WebGPU's 'unfilterable-float' sample type), and GLSL has no non-comparison
+    //   depth texture type for naga to translate into texture_depth_2d;
+    CHECK_FALSE(declares("texture_depth_2d"));
+    // - no noise sampler: the tile is read texel for texel with textureLoad (p mod its size);
+    CHECK_FALSE(declares("var u_noise_sampler"));
+    // - no kernel storage buffer: the 64 samples are SsaoUniforms.kernel, in the one uniform
+    //   block (1024 bytes, far below WebGPU's 64 KiB uniform binding limit);
+    CHECK(declares("kernel: array<vec4<f32>, 64>"));
+    CHECK_FALSE(declares("var<storage"));
+    // - SsaoUniforms is aogen's block (proj first, the camera and every SSAO setting). Seed 004's
+    //   SsaoUniform, for a renderer that runs the seed's own shader, is
+    //   uniforms::pointcloud_block(), packed by pack_pointcloud(rules::wgsl_uniform): its WGSL
+    //   declaration, read back through naga, has the seed's offsets and size.
+    const layout::struct_layout seed = layout::compute(uniforms::pointcloud_block(), layout::rules::wgsl_uniform);
+    layout::declaration_options o;
+    o.binding = 5, o.instance = "params";
+    const compile::buffer_block b = naga_block(shader_using(layout::declare(seed, layout::language::wgsl, o), "params"), shader_stage::compute, "SsaoUniform");
+    REQUIRE(b.members.size() == 5);
+    const std::pair<const char*, uint32_t> expected[] = {{"inv_proj", 0}, {"proj", 64}, {"radius", 128}, {"bias", 132}, {"_pad", 136}};
+    for (size_t i = 0; i < 5; ++i) {
+        CHECK(b.members[i].name == expected[i].first);
+        CHECK(b.members[i].offset == expected[i].second);
+    }
+    CHECK(b.members[0].type == "mat4");
+    CHECK(b.members[2].type == "float");
+    CHECK(b.members[4].type == "vec2");
+    CHECK(seed.size == 144);
+    CHECK(uniforms::pack_pointcloud(presets::pointcloud_viewer_ssao().ssao, perspective(0.6f, 1.5f, 0.1f, 100.0f), layout::rules::wgsl_uniform).size() ==
+          144);
+}
+
+TEST_CASE("wgsl: a variant without a WGSL form is refused by name, with the reason")
+{
+    const variant v = variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16");
+    try {
+        emitted_texts(v, compile::target::wgsl);
+        FAIL("an fp16 variant was translated to WGSL");
+    } catch (const error& e) {
+        const std::string what = e.what();
+        CHECK(what.find("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16.ao.comp") != std::string::npos);
+        CHECK(what.find("shader-f16") != std::string::npos);
+    }
+    // Vulkan-model SPIR-V (combined samplers) has no WGSL form either, and says what to use.
+    const variant plain = variant_from_name("ssao-s16-full-noblur-gbufworld-std-persp-cs");
+    const codegen::shader_source s = codegen::generate(plain).front();
+    try {
+        compile::compile(s.glsl, s.stage, s.name, {compile::target::wgsl});
+        FAIL("combined image samplers were translated to WGSL");
+    } catch (const error& e) {
+        CHECK(std::string(e.what()).find("binding_model::webgpu") != std::string::npos);
+    }
+}
