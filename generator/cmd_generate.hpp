@@ -348,7 +348,6 @@ struct generate_command {
         }
         std::vector<variant> chosen;
         for (const selection& s : selected) chosen.push_back(s.v);
-        if (!quiet && g.targets_include(compile::target::wgsl)) std::cerr << "aogen: WGSL through naga and Tint\n";
         g.prepare_wgsl(chosen);
         for (size_t i = 0; i < selected.size(); ++i) {
             if (!quiet) std::cerr << "aogen: [" << i + 1 << "/" << selected.size() << "] " << to_name(selected[i].v) << "\n";

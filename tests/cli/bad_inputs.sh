@@ -627,9 +627,9 @@ group_generate() {
   new_case wgsl-fp16
   expect_fail -m 'fp16' -m 'shader-f16' -m 'valid: --targets' -- "$aogen" generate --quiet --targets spv,wgsl --out out gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16
   new_case wgsl-without-node
-  expect_fail -m 'wgsl target' -m 'Node.js' -- env AOGEN_NODE=/nonexistent/node "$aogen" generate --quiet --targets spv,wgsl --out out $v1
+  AOGEN_NODE=/nonexistent/node expect_fail -m "wgsl target" -m "Node.js" -- "$aogen" generate --quiet --targets spv,wgsl --out out $v1
   new_case wgsl-tools-missing
-  expect_fail -m 'wgsl target' -m 'aogen_wgsl.mjs' -- env AOGEN_WGSL_TOOLS=/nonexistent "$aogen" generate --quiet --targets wgsl --out out $v1
+  AOGEN_WGSL_TOOLS=/nonexistent expect_fail -m "wgsl target" -m "aogen_wgsl.mjs" -- "$aogen" generate --quiet --targets wgsl --out out $v1
   new_case spec-samples-out-of-range
   printf '{"matrices": [{"samples": [0]}]}' >"$c/spec.json"
   expect_fail -m "$(field spec.json 'matrices[0].samples[0]')" -m '1\.\.256' -- "${gen[@]}" --out out --variants spec.json
