@@ -14,17 +14,22 @@
 //   createShaderModule).
 //   node aogen_wgsl.mjs to-spirv DIR     for every DIR/<id>.wgsl: naga's SPIR-V as DIR/<id>.spv.out
 //                                        (little-endian words), or DIR/<id>.error
+//   node aogen_wgsl.mjs run DIR          executes a compute chain's WGSL on a real WebGPU device:
+//                                        Dawn's OpenGL ES backend (Tint → GLSL ES, Mesa's llvmpipe
+//                                        through EGL surfaceless), from DIR/chain.txt (below);
+//                                        writes DIR/out.bin, the last pass's output, one byte a
+//                                        pixel (.r of rgba8unorm), or DIR/run.error
 //   node aogen_wgsl.mjs versions         the versions of naga and of this script's Node.js
 //
 // Exit status: 0 when every file was handled (each with its output or its .error), 2 for a
 // usage error, 3 when a tool cannot be loaded (its message on stderr).
-import { readdirSync, readFileSync, writeFileSync } from "node:fs";
+import { existsSync, readdirSync, readFileSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 
 const [command, dir] = process.argv.slice(2);
 
 function usage() {
-    process.stderr.write("usage: node aogen_wgsl.mjs from-spirv DIR | tint DIR | to-spirv DIR | versions\n");
+    process.stderr.write("usage: node aogen_wgsl.mjs from-spirv DIR | tint DIR | to-spirv DIR | run DIR | versions\n");
     process.exit(2);
 }
 
@@ -155,6 +160,92 @@ async function toSpirv() {
     }
 }
 
+// chain.txt, one line each:
+//   gbuffer W H            depth.f32 (W×H floats, r32float) and, if present, normals.f32 (W×H×4)
+//   noise N                noise.f32 (N×N×4 floats, rgba32float)
+//   pass FILE W H PPI      a compute pass: its WGSL, its output's size, pixels per invocation;
+//                          uniforms<i>.bin its uniform bytes (i from 0); it reads the previous
+//                          pass's output as ao_input
+// Bindings follow aogen/bindings.hpp's webgpu model; workgroups are the WGSL's @workgroup_size.
+async function runChain() {
+    process.env.EGL_PLATFORM ??= "surfaceless"; // no display: Mesa's EGL without a window system
+    const webgpu = await load("webgpu");
+    Object.assign(globalThis, webgpu.globals);
+    gpu = webgpu.create(["backend=opengles"]);
+    const adapter = await gpu.requestAdapter({ featureLevel: "compatibility" });
+    if (!adapter) throw new Error("Dawn's OpenGL ES backend gave no WebGPU adapter");
+    const device = await adapter.requestDevice();
+    const lines = readFileSync(join(dir, "chain.txt"), "utf8").split("\n").filter((l) => l.trim()).map((l) => l.trim().split(/\s+/));
+    // A copy: a small file's Buffer is a view into Node's shared pool, at any offset.
+    const floats = (name) => new Float32Array(new Uint8Array(readFileSync(join(dir, name))).buffer);
+    const usage = GPUTextureUsage;
+    const upload = (w, h, format, data, bpp) => {
+        const t = device.createTexture({ size: [w, h], format, usage: usage.TEXTURE_BINDING | usage.COPY_DST });
+        device.queue.writeTexture({ texture: t }, data, { bytesPerRow: w * bpp }, [w, h]);
+        return t;
+    };
+    let depth, normals, noise;
+    const passes = [];
+    for (const l of lines) {
+        if (l[0] === "gbuffer") {
+            const w = +l[1], h = +l[2];
+            depth = upload(w, h, "r32float", floats("depth.f32"), 4);
+            if (existsSync(join(dir, "normals.f32"))) normals = upload(w, h, "rgba32float", floats("normals.f32"), 16);
+        } else if (l[0] === "noise") {
+            noise = upload(+l[1], +l[1], "rgba32float", floats("noise.f32"), 16);
+        } else if (l[0] === "pass") {
+            passes.push({ file: l[1], w: +l[2], h: +l[3], ppi: +l[4] });
+        }
+    }
+    const sampler = device.createSampler({ addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
+    const entry = (binding, kind) => ({ binding, visibility: GPUShaderStage.COMPUTE, ...kind });
+    const tex = { texture: { sampleType: "unfilterable-float" } }, smp = { sampler: { type: "non-filtering" } };
+    const ubo = { buffer: { type: "uniform" } }, out = { storageTexture: { access: "write-only", format: "rgba8unorm" } };
+    device.pushErrorScope("validation");
+    const encoder = device.createCommandEncoder();
+    let previous;
+    passes.forEach((p, i) => {
+        const code = readFileSync(join(dir, p.file), "utf8");
+        const ao = i === 0;
+        const layout = device.createBindGroupLayout({
+            entries: ao ? [entry(0, ubo), entry(1, tex), entry(2, smp), ...(normals ? [entry(3, tex)] : []), entry(4, tex), entry(5, out)]
+                        : [entry(0, ubo), entry(1, tex), entry(2, smp), entry(3, tex), entry(4, smp), entry(5, out)],
+        });
+        const pipeline = device.createComputePipeline({
+            layout: device.createPipelineLayout({ bindGroupLayouts: [layout] }),
+            compute: { module: device.createShaderModule({ code }), entryPoint: "main" },
+        });
+        const bytes = readFileSync(join(dir, `uniforms${i}.bin`));
+        const buffer = device.createBuffer({ size: Math.max(16, Math.ceil(bytes.length / 16) * 16), usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+        device.queue.writeBuffer(buffer, 0, bytes);
+        const output = device.createTexture({ size: [p.w, p.h], format: "rgba8unorm", usage: usage.STORAGE_BINDING | usage.TEXTURE_BINDING | usage.COPY_SRC });
+        const resources = ao ? [[0, { buffer }], [1, depth.createView()], [2, sampler], ...(normals ? [[3, normals.createView()]] : []), [4, noise.createView()], [5, output.createView()]]
+                             : [[0, { buffer }], [1, depth.createView()], [2, sampler], [3, previous.createView()], [4, sampler], [5, output.createView()]];
+        const group = device.createBindGroup({ layout, entries: resources.map(([binding, resource]) => ({ binding, resource })) });
+        const size = /@workgroup_size\((\d+), (\d+)/.exec(code);
+        const pass = encoder.beginComputePass();
+        pass.setPipeline(pipeline);
+        pass.setBindGroup(0, group);
+        pass.dispatchWorkgroups(Math.ceil(p.w / p.ppi / +size[1]), Math.ceil(p.h / p.ppi / +size[2]));
+        pass.end();
+        previous = output;
+        p.output = output;
+    });
+    const last = passes[passes.length - 1];
+    const rowBytes = Math.ceil((last.w * 4) / 256) * 256;
+    const read = device.createBuffer({ size: rowBytes * last.h, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+    encoder.copyTextureToBuffer({ texture: last.output }, { buffer: read, bytesPerRow: rowBytes }, [last.w, last.h]);
+    device.queue.submit([encoder.finish()]);
+    const error = await device.popErrorScope();
+    if (error) throw new Error(error.message.trim());
+    await read.mapAsync(GPUMapMode.READ);
+    const rgba = new Uint8Array(read.getMappedRange());
+    const r = new Uint8Array(last.w * last.h);
+    for (let y = 0; y < last.h; ++y) for (let x = 0; x < last.w; ++x) r[y * last.w + x] = rgba[y * rowBytes + 4 * x];
+    writeFileSync(join(dir, "out.bin"), r);
+    writeFileSync(join(dir, "device.txt"), `Dawn ${adapter.info.backendType || "opengles"}: ${adapter.info.description}`);
+}
+
 if (command === "versions") {
     naga = await load("naga-wasm");
     process.stdout.write(`naga ${naga.nagaVersion}\nnode ${process.versions.node}\n`);
@@ -164,6 +255,12 @@ if (command === "versions") {
     await checkWithTint();
 } else if (command === "to-spirv" && dir) {
     await toSpirv();
+} else if (command === "run" && dir) {
+    try {
+        await runChain();
+    } catch (e) {
+        writeFileSync(join(dir, "run.error"), `Dawn could not run the chain: ${e.message}\n`);
+    }
 } else {
     usage();
 }

@@ -43,6 +43,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace aogen {
@@ -112,6 +113,36 @@ inline std::optional<uint32_t> sampler_binding_of(pass_family f, resource_role r
 {
     if (slots(role, m) < 2) return std::nullopt;
     return binding_of(f, role, m) + 1;
+}
+
+// What a role's resource holds, in a few words (README's table).
+inline const char* what_it_holds(resource_role r)
+{
+    switch (r) {
+    case resource_role::uniforms: return "the pass's uniform block (Ssao/Gtao/VbaoUniforms; BlurUniforms), std140 = WGSL uniform bytes";
+    case resource_role::depth: return "the depth buffer, full resolution, raw depth in .r";
+    case resource_role::normals: return "G-buffer normals, float xyz (G-buffer variants only)";
+    case resource_role::noise: return "the noise tile, float texels (texelFetch / textureLoad)";
+    case resource_role::ao_input: return "the previous pass's AO, in .r";
+    case resource_role::output: return "the output: a storage image (compute passes only)";
+    case resource_role::raw: return "raw values before the guard, r32f (codegen::options::diagnostics only)";
+    }
+    return "";
+}
+
+// The binding tables as Markdown (README's § Bindings holds this text, and a test keeps the
+// two equal): per family, a row per role with its binding in each model.
+inline std::string binding_table_markdown()
+{
+    std::string md = "| passes | role | holds | vulkan | webgpu |\n|---|---|---|---:|---|\n";
+    for (pass_family f : {pass_family::ao, pass_family::filter})
+        for (resource_role r : pass_roles(f)) {
+            const std::optional<uint32_t> s = sampler_binding_of(f, r, binding_model::webgpu);
+            md += std::string("| ") + (f == pass_family::ao ? "ao" : "filter") + " | `" + to_name(r) + "` | " + what_it_holds(r) + " | " +
+                  std::to_string(binding_of(f, r, binding_model::vulkan)) + " | " + std::to_string(binding_of(f, r, binding_model::webgpu)) +
+                  (s ? " (its sampler " + std::to_string(*s) + ")" : "") + " |\n";
+        }
+    return md;
 }
 
 } // namespace aogen

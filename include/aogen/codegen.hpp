@@ -289,7 +289,10 @@ inline std::string declaration(const resource& r)
     const std::string at = "layout(set = " + std::to_string(r.set) + ", binding = " + std::to_string(r.binding);
     switch (r.kind) {
     case resource_kind::combined_image_sampler: return at + ") uniform sampler2D u_" + r.name + ";\n";
-    case resource_kind::storage_image: return at + ", " + r.format + ") uniform writeonly image2D u_" + r.name + ";\n";
+    case resource_kind::storage_image:
+        // The output's format qualifier is the AO_OUTPUT_FORMAT define (options::output_format).
+        return at + ", " + (r.role == resource_role::output ? std::string("AO_OUTPUT_FORMAT") : r.format) + ") uniform writeonly image2D u_" + r.name +
+               ";\n";
     case resource_kind::sampled_image:
         // A gathered texture is named u_<role>_texture and sampled through its pair's macro.
         return at + ") uniform texture2D u_" + r.name + (is_gathered(r.role) ? "_texture" : "") + ";\n";

@@ -104,12 +104,21 @@ inline const std::vector<target> all_targets = [] {
     return std::vector<target>(values.begin(), values.end());
 }();
 
+// The targets compile() makes from any Vulkan GLSL, through SPIRV-Cross: all but wgsl, which
+// needs SPIR-V in WebGPU's binding model and Node.js (compile.hpp).
+inline const std::vector<target> spirv_cross_targets = [] {
+    std::vector<target> out;
+    for (target t : all_targets)
+        if (t != target::wgsl) out.push_back(t);
+    return out;
+}();
+
 inline const char* to_name(target t) { return names::name_of(target_names, t, "target"); }
 inline target target_from_name(std::string_view name, std::string_view subject = "target")
 {
     return names::value_of(target_names, name, subject);
 }
-// "spv, glsl, essl, hlsl, hlsl60, msl, msl_ios".
+// "spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl".
 inline std::string target_list() { return names::list(target_names); }
 
 // ---------------------------------------------------------------------------------

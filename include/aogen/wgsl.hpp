@@ -248,4 +248,52 @@ inline std::vector<std::vector<uint32_t>> to_spirv(const std::vector<wgsl_job>& 
     return out;
 }
 
+// One compute pass of a chain for run_on_dawn: its WGSL, its output's size, the pixels one
+// invocation writes (aogen::pixels_per_invocation) and its uniform bytes.
+struct dawn_pass {
+    std::string wgsl;
+    int width = 0, height = 0;
+    int pixels_per_invocation = 1;
+    std::vector<uint8_t> uniforms;
+};
+
+// The result of run_on_dawn: the last pass's output (.r, one byte a pixel, row-major) and the
+// device Dawn ran it on.
+struct dawn_result {
+    std::vector<uint8_t> ao;
+    std::string device;
+};
+
+// Executes a compute chain's WGSL on a real WebGPU implementation: Dawn (npm webgpu) on its
+// OpenGL ES backend, Tint's GLSL ES on Mesa's llvmpipe (EGL surfaceless) — Dawn refuses
+// lavapipe as a Vulkan device. Inputs as aogen::gbuffer and chain_inputs hold them: depth
+// (W×H floats), normals (W×H×4 floats, or none), the noise tile (N×N RGBA32F bytes). Bindings
+// are the webgpu model's (bindings.hpp). An aogen::error with Dawn's message when it fails.
+inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& depth, const std::vector<float>& normals, int noise_size,
+                               const std::vector<uint8_t>& noise, const std::vector<dawn_pass>& passes, const tools& t = find_tools())
+{
+    detail::scratch s;
+    const auto floats = [](const std::vector<float>& f) { return std::string(reinterpret_cast<const char*>(f.data()), f.size() * sizeof(float)); };
+    std::string chain = "gbuffer " + std::to_string(width) + " " + std::to_string(height) + "\nnoise " + std::to_string(noise_size) + "\n";
+    detail::write_all(s.file("depth.f32"), floats(depth));
+    if (!normals.empty()) detail::write_all(s.file("normals.f32"), floats(normals));
+    detail::write_all(s.file("noise.f32"), std::string(noise.begin(), noise.end()));
+    for (size_t i = 0; i < passes.size(); ++i) {
+        const std::string file = "pass" + std::to_string(i) + ".wgsl";
+        detail::write_all(s.file(file), passes[i].wgsl);
+        detail::write_all(s.file("uniforms" + std::to_string(i) + ".bin"), std::string(passes[i].uniforms.begin(), passes[i].uniforms.end()));
+        chain += "pass " + file + " " + std::to_string(passes[i].width) + " " + std::to_string(passes[i].height) + " " +
+                 std::to_string(passes[i].pixels_per_invocation) + "\n";
+    }
+    detail::write_all(s.file("chain.txt"), chain);
+    detail::run(t, "run", s.path());
+    if (detail::is_file(s.file("run.error"))) {
+        std::string message = detail::read_all(s.file("run.error"));
+        while (!message.empty() && message.back() == '\n') message.pop_back();
+        fail("wgsl on dawn", message, "valid: a compute chain Dawn's OpenGL ES backend runs");
+    }
+    const std::string ao = detail::read_all(s.file("out.bin"));
+    return {std::vector<uint8_t>(ao.begin(), ao.end()), detail::read_all(s.file("device.txt"))};
+}
+
 } // namespace aogen::wgsl

@@ -318,12 +318,13 @@ const std::vector<cc::target> all_but_essl{cc::target::spv,    cc::target::glsl,
 
 TEST_CASE("compile: target and stage names", "[compile]")
 {
-    CHECK(cc::target_list() == "spv, glsl, essl, hlsl, hlsl60, msl, msl_ios");
+    CHECK(cc::target_list() == "spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl");
+    CHECK(cc::spirv_cross_targets.size() + 1 == cc::all_targets.size()); // all but wgsl (naga's)
     for (cc::target t : cc::all_targets) CHECK(cc::target_from_name(cc::to_name(t)) == t);
     CHECK(cc::target_from_name("msl-ios") == cc::target::msl_ios);
     CHECK(cc::target_from_name("hlsl") == cc::target::hlsl50);
-    CHECK(error_of([] { cc::target_from_name("wgsl", "--target"); }) ==
-          "--target: 'wgsl' is not a known name (valid: spv, glsl, essl, hlsl, hlsl60, msl, msl_ios)");
+    CHECK(error_of([] { cc::target_from_name("dxil", "--target"); }) ==
+          "--target: 'dxil' is not a known name (valid: spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl)");
     CHECK(cc::shader_stage_from_name("fragment") == cc::shader_stage::fragment);
     CHECK(cc::stage_of(aogen::pipeline_stage::compute) == cc::shader_stage::compute);
     CHECK(cc::stage_of(aogen::pipeline_stage::fragment) == cc::shader_stage::fragment);
@@ -449,7 +450,7 @@ TEST_CASE("compile: compute shader with an ES image format to every target", "[c
 {
     for (const char* format : {"r32f", "rgba8"}) {
         INFO(format);
-        const cc::compiled out = cc::compile(compute_with_format(format), cc::shader_stage::compute, "test compute", cc::all_targets);
+        const cc::compiled out = cc::compile(compute_with_format(format), cc::shader_stage::compute, "test compute", cc::spirv_cross_targets);
         CHECK(out.text.size() == 6);
         revalidate(out, cc::shader_stage::compute);
         CHECK(out.refl.bindings.at(2).image_format == format);
@@ -486,7 +487,7 @@ void main() { ao = float(bitCount(m.bits)) / 32.0; }
 
 TEST_CASE("compile: fragment shader with a separate texture and sampler, re-validated", "[compile]")
 {
-    const cc::compiled out = cc::compile(fragment_source, cc::shader_stage::fragment, "test fragment", cc::all_targets);
+    const cc::compiled out = cc::compile(fragment_source, cc::shader_stage::fragment, "test fragment", cc::spirv_cross_targets);
     CHECK(out.text.size() == 6);
     const auto hlsl = revalidate(out, cc::shader_stage::fragment);
     const cc::reflection& r = out.refl;
@@ -536,7 +537,7 @@ TEST_CASE("compile: fragment shader with a separate texture and sampler, re-vali
 
 TEST_CASE("compile: vertex shader, re-validated", "[compile]")
 {
-    const cc::compiled out = cc::compile(vertex_source, cc::shader_stage::vertex, "test vertex", cc::all_targets);
+    const cc::compiled out = cc::compile(vertex_source, cc::shader_stage::vertex, "test vertex", cc::spirv_cross_targets);
     CHECK(out.text.size() == 6);
     revalidate(out, cc::shader_stage::vertex);
     const cc::reflection& r = out.refl;
@@ -554,7 +555,7 @@ TEST_CASE("compile: vertex shader, re-validated", "[compile]")
 
 TEST_CASE("compile: storage buffers, push constants and unused bindings", "[compile]")
 {
-    const cc::compiled out = cc::compile(storage_source, cc::shader_stage::compute, "test storage", cc::all_targets);
+    const cc::compiled out = cc::compile(storage_source, cc::shader_stage::compute, "test storage", cc::spirv_cross_targets);
     CHECK(out.text.size() == 6);
     revalidate(out, cc::shader_stage::compute);
     const cc::reflection& r = out.refl;
@@ -645,7 +646,7 @@ void main()
 TEST_CASE("compile: same input, same bytes", "[compile]")
 {
     const std::string source = compute_with_format("r32f");
-    const cc::compiled a = cc::compile(source, cc::shader_stage::compute, "a", cc::all_targets);
+    const cc::compiled a = cc::compile(source, cc::shader_stage::compute, "a", cc::spirv_cross_targets);
     const cc::compiled b = cc::compile(source, cc::shader_stage::compute, "b",
                                        {cc::target::msl_ios, cc::target::essl, cc::target::hlsl60, cc::target::glsl,
                                         cc::target::msl_macos, cc::target::hlsl50, cc::target::glsl});
@@ -666,14 +667,14 @@ TEST_CASE("compile: several threads at once, same bytes as one", "[compile]")
     const cc::shader_stage stages[] = {cc::shader_stage::compute, cc::shader_stage::fragment, cc::shader_stage::vertex,
                                        cc::shader_stage::compute};
     std::vector<cc::compiled> alone;
-    for (int i = 0; i < 4; ++i) alone.push_back(cc::compile(sources[i], stages[i], "alone", cc::all_targets));
+    for (int i = 0; i < 4; ++i) alone.push_back(cc::compile(sources[i], stages[i], "alone", cc::spirv_cross_targets));
     std::vector<cc::compiled> together(8);
     std::vector<std::string> failures(8);
     std::vector<std::thread> threads;
     for (int i = 0; i < 8; ++i)
         threads.emplace_back([&, i] {
             try {
-                together[i] = cc::compile(sources[i % 4], stages[i % 4], "thread", cc::all_targets);
+                together[i] = cc::compile(sources[i % 4], stages[i % 4], "thread", cc::spirv_cross_targets);
             } catch (const std::exception& e) {
                 failures[i] = e.what();
             }
@@ -691,7 +692,7 @@ TEST_CASE("compile: without the optimizer", "[compile]")
 {
     cc::options o;
     o.optimize = false;
-    const cc::compiled out = cc::compile(compute_with_format("r32f"), cc::shader_stage::compute, "raw", cc::all_targets, o);
+    const cc::compiled out = cc::compile(compute_with_format("r32f"), cc::shader_stage::compute, "raw", cc::spirv_cross_targets, o);
     revalidate(out, cc::shader_stage::compute);
     CHECK(out.refl.spirv_words == out.refl.unoptimized_words);
     CHECK(out.refl.spirv_instructions == out.refl.unoptimized_instructions);
@@ -706,7 +707,7 @@ TEST_CASE("compile: glslang errors name the file and line of #line directives", 
                                "void main() {\n"
                                "    float x = undeclared_thing;\n"
                                "}\n";
-    const std::string e = error_of([&] { cc::compile(source, cc::shader_stage::compute, "ssao-s16 ao", cc::all_targets); });
+    const std::string e = error_of([&] { cc::compile(source, cc::shader_stage::compute, "ssao-s16 ao", cc::spirv_cross_targets); });
     CHECK(e.rfind("ssao-s16 ao: glslang rejected the compute shader", 0) == 0);
     CHECK(e.find("ssao.glsl:3: 'undeclared_thing' : undeclared identifier") != std::string::npos);
 

@@ -10,6 +10,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <iterator>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -264,6 +267,49 @@ TEST_CASE("codegen: resources per pass and stage", "[codegen]")
           std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::combined_image_sampler, "depth"},
                            {3, k::combined_image_sampler, "noise"}});
     CHECK(codegen::resources(v, pass_kind::ao, shader_stage::vertex).empty());
+}
+
+TEST_CASE("codegen: the webgpu binding model separates textures and samplers, at bindings.hpp's numbers", "[codegen]")
+{
+    using k = codegen::resource_kind;
+    using row = std::tuple<uint32_t, k, std::string>;
+    const auto bindings = [](const std::vector<codegen::resource>& rs) {
+        std::vector<row> out;
+        for (const codegen::resource& r : rs) out.emplace_back(r.binding, r.kind, r.name);
+        return out;
+    };
+    codegen::options o;
+    o.model = binding_model::webgpu;
+    o.output_format = "rgba8";
+    variant v;
+    CHECK(bindings(codegen::resources(v, pass_kind::ao, shader_stage::compute, o)) ==
+          std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::sampled_image, "depth"}, {2, k::sampler, "depth_sampler"},
+                           {3, k::sampled_image, "normals"}, {4, k::sampled_image, "noise"}, {5, k::storage_image, "output"}});
+    CHECK(bindings(codegen::resources(v, pass_kind::upsample, shader_stage::compute, o)) ==
+          std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::sampled_image, "depth"}, {2, k::sampler, "depth_sampler"},
+                           {3, k::sampled_image, "ao_input"}, {4, k::sampler, "ao_input_sampler"}, {5, k::storage_image, "output"}});
+    // The GLSL declares exactly these, and the templates' names stay usable.
+    const std::string glsl = codegen::generate(v, o).front().glsl;
+    CHECK(glsl.find("layout(set = 0, binding = 1) uniform texture2D u_depth_texture;") != std::string::npos);
+    CHECK(glsl.find("layout(set = 0, binding = 2) uniform sampler u_depth_sampler;\n#define u_depth sampler2D(u_depth_texture, u_depth_sampler)") !=
+          std::string::npos);
+    CHECK(glsl.find("layout(set = 0, binding = 4) uniform texture2D u_noise;") != std::string::npos);
+    CHECK(glsl.find("layout(set = 0, binding = 5, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;") != std::string::npos);
+    CHECK(glsl.find("#define AO_OUTPUT_FORMAT rgba8") != std::string::npos);
+    CHECK(glsl.find("#extension GL_EXT_samplerless_texture_functions : require") != std::string::npos);
+    CHECK(glsl.find("sampler2D u_") == std::string::npos);
+    // Core WebGPU has no r8unorm storage texture.
+    o.output_format = "r8";
+    CHECK_THROWS_WITH(codegen::resources(v, pass_kind::ao, shader_stage::compute, o),
+                      Catch::Contains("r8 is not a storage texture format of core WebGPU") && Catch::Contains("valid: rgba8, r32f, rgba16f"));
+}
+
+TEST_CASE("codegen: README's binding table is bindings.hpp's", "[codegen]")
+{
+    std::ifstream in(AOGEN_SOURCE_DIR "/README.md");
+    REQUIRE(in);
+    const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(readme.find(binding_table_markdown()) != std::string::npos);
 }
 
 TEST_CASE("codegen: the fullscreen vertex shader is one text for every pass and variant", "[codegen]")

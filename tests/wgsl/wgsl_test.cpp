@@ -14,6 +14,7 @@
 #include <aogen/emitted.hpp>
 #include <aogen/uniforms.hpp>
 #include <aogen/vulkan/wgsl_round_trip.hpp>
+#include <aogen/wgsl_dawn.hpp>
 
 #include <iostream>
 #include <regex>
@@ -141,6 +142,36 @@ TEST_CASE("wgsl: the emitted WGSL, validated by naga and Tint and round-tripped 
         CHECK(r.bit_identical());
     }
     require_clean(*ctx);
+}
+
+TEST_CASE("wgsl: Dawn executes the emitted WGSL of compute variants (Tint's GLSL ES on llvmpipe) bit for bit like the SPIR-V")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const ray_cast_crease scene;
+    for (const char* name : emitted_target_variants) {
+        const variant v = variant_from_name(name);
+        if (v.stage != pipeline_stage::compute) continue; // fragment passes are not drawn on Dawn here
+        INFO(name);
+        const std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+        for (int g = 0; g < 2; ++g) {
+            const vulkan::gbuffer gb = g == 0 ? crease(W, H, 0.6f, proj) : scene.for_variant(v);
+            const vulkan::chain_settings s = g == 0 ? settings_for(proj) : aogen_report::default_settings(v, scene.scene);
+            const auto [tw, th] = target_size(v, gb.width, gb.height);
+            const wgsl::dawn_result got = wgsl::run_variant_on_dawn(v, texts, gb, inputs_for(v, s, tw, th));
+            std::vector<float> ao(got.ao.size());
+            for (size_t i = 0; i < ao.size(); ++i) ao[i] = got.ao[i] / 255.0f;
+            const vulkan::chain_result expected = vulkan::chain(*ctx, v).run(gb, s);
+            REQUIRE(ao.size() == expected.ao.size());
+            CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f); // not two blank images
+            const ao_difference d = difference_of(ao, expected.ao);
+            std::cout << "wgsl on " << got.device << ", " << name << (g == 0 ? " analytic" : " ray-cast") << " crease: " << d.identical << " of "
+                      << d.pixels << " pixels bit-identical, largest difference " << d.largest * 255 << "/255\n";
+            CHECK(d.bit_identical()); // Tint's GLSL ES on llvmpipe does the SPIR-V's float operations
+        }
+    }
 }
 
 TEST_CASE("wgsl: a planted wrong binding and a planted changed constant in the WGSL are seen by the round trip")
