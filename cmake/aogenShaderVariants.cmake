@@ -2,7 +2,8 @@
 #     [VARIANTS <name>...]          canonical variant names (see `aogen list`)
 #     [SPEC <file.json>]            a variant spec (names and/or matrices)
 #     [SCENE <file.json>]           what the renderer has and needs: selects features
-#     [TARGETS <t>...]              spv glsl essl hlsl msl ... (default: spv)
+#     [TARGETS <t>...]              spv glsl essl hlsl hlsl60 msl msl_ios wgsl (default: spv;
+#                                   wgsl needs Node.js and the WGSL tools: README § WebGPU)
 #     [OUTPUT_DIR <dir>])           default: ${CMAKE_CURRENT_BINARY_DIR}/aogen/<target>
 #
 # Generates the variants' shaders at build time with `aogen generate` and makes the

@@ -174,7 +174,10 @@ async function runChain() {
     gpu = webgpu.create(["backend=opengles"]);
     const adapter = await gpu.requestAdapter({ featureLevel: "compatibility" });
     if (!adapter) throw new Error("Dawn's OpenGL ES backend gave no WebGPU adapter");
-    const device = await adapter.requestDevice();
+    // Compatibility mode's default is 128 invocations per workgroup (core WebGPU's 256): ask for
+    // what the adapter has, as an engine running a -wg16x16 variant must.
+    const workgroupLimits = ["maxComputeInvocationsPerWorkgroup", "maxComputeWorkgroupSizeX", "maxComputeWorkgroupSizeY"];
+    const device = await adapter.requestDevice({ requiredLimits: Object.fromEntries(workgroupLimits.map((k) => [k, adapter.limits[k]])) });
     const lines = readFileSync(join(dir, "chain.txt"), "utf8").split("\n").filter((l) => l.trim()).map((l) => l.trim().split(/\s+/));
     // A copy: a small file's Buffer is a view into Node's shared pool, at any offset.
     const floats = (name) => new Float32Array(new Uint8Array(readFileSync(join(dir, name))).buffer);

@@ -21,6 +21,7 @@
 #include <aogen/matrix.hpp>
 #include <aogen/vulkan/hlsl_round_trip.hpp>
 #include <aogen/vulkan/wgsl_round_trip.hpp>
+#include <aogen/wgsl_dawn.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -56,15 +57,17 @@ int main(int argc, char** argv)
         if (variants.empty()) vs = aogen::default_matrix();
         else for (const std::string& n : aogen_report::comma_list(variants)) vs.push_back(aogen::variant_from_name(n));
         namespace cc = aogen::compile;
+        // wgsl is checked twice: naga's round trip (every variant) and Dawn (compute variants).
         const std::vector<cc::target> checkable{cc::target::glsl, cc::target::essl, cc::target::hlsl50, cc::target::hlsl60, cc::target::wgsl};
         const char* const names[] = {"glsl (OpenGL 4.5)", "essl (OpenGL ES 3.2)", "hlsl sm50 (glslang round trip)", "hlsl sm60 (glslang round trip)",
-                                     "wgsl (naga round trip)"};
+                                     "wgsl (naga round trip)", "wgsl (Dawn, OpenGL ES backend: compute)"};
         std::vector<int> chosen; // indices into checkable
         for (const std::string& t : aogen_report::comma_list(targets)) {
             const cc::target target = cc::target_from_name(t, "--targets");
             const auto at = std::find(checkable.begin(), checkable.end(), target);
             if (at == checkable.end()) aogen::fail("--targets", t + " is not run against the SPIR-V here", "valid: glsl, essl, hlsl, hlsl60, wgsl");
             chosen.push_back(int(at - checkable.begin()));
+            if (target == cc::target::wgsl) chosen.push_back(5);
         }
         const auto wanted = [&](int k) { return std::find(chosen.begin(), chosen.end(), k) != chosen.end(); };
         aogen::vulkan::context vk(aogen::vulkan::device_options{});
@@ -78,7 +81,7 @@ int main(int argc, char** argv)
             if (!v.fp16) wgsl_variants.push_back(v);
         std::optional<aogen::vulkan::wgsl_round_trips> wgsl;
         if (wanted(4)) wgsl.emplace(wgsl_variants);
-        tally t[5];
+        tally t[6];
         for (aogen::scenes::scene s : aogen_report::load_scenes(scenes)) {
             s.camera.width = w, s.camera.height = h;
             aogen_report::require_radius_works(s);
@@ -100,12 +103,19 @@ int main(int argc, char** argv)
                 const auto run = [&](int k) -> std::optional<std::vector<float>> {
                     if (v.fp16 || !wanted(k)) return std::nullopt;
                     if (k == 4) return aogen::vulkan::bound_chain(vk, *wgsl->passes(vk, v), gbuffers.gpu(v), in, tw, th).run_once().ao;
+                    if (k == 5) {
+                        if (v.stage != aogen::pipeline_stage::compute) return std::nullopt;
+                        const std::vector<uint8_t> bytes = aogen::wgsl::run_variant_on_dawn(v, wgsl->texts(v), gbuffers.host(v), in).ao;
+                        std::vector<float> ao(bytes.size());
+                        for (size_t i = 0; i < ao.size(); ++i) ao[i] = bytes[i] / 255.0f;
+                        return ao;
+                    }
                     if (k == 0) return aogen::gl::run(gl, v, aogen::emitted_texts(v, aogen::compile::target::glsl), gbuffers.host(v), in).ao;
                     if (k == 1) return aogen::gl::run(es, v, aogen::emitted_texts(v, aogen::compile::target::essl, rgba8), gbuffers.host(v), in, rgba8).ao;
                     const aogen::compile::target hlsl = k == 2 ? aogen::compile::target::hlsl50 : aogen::compile::target::hlsl60;
                     return aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, v, hlsl), gbuffers.gpu(v), in, tw, th).run_once().ao;
                 };
-                for (int k = 0; k < 5; ++k) {
+                for (int k = 0; k < 6; ++k) {
                     const std::optional<std::vector<float>> got = run(k);
                     if (!got) continue;
                     const aogen::ao_difference d = aogen::difference_of(*got, expected);
