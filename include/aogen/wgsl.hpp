@@ -44,6 +44,7 @@
 #include <sstream>
 #include <string>
 #include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -146,14 +147,20 @@ inline void run(const tools& t, const std::string& command, const std::string& d
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     const std::string log = dir + "/stderr.log";
+    // Opened before the fork: between fork and exec the child calls only dup2 and execv.
+    const int log_fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (log_fd < 0) fail("wgsl tools", "cannot write " + log + ": " + std::strerror(errno), "valid: a writable temporary folder ($TMPDIR)");
     const pid_t pid = ::fork();
-    if (pid < 0) fail("wgsl tools", std::string("cannot start node: ") + std::strerror(errno), "valid: a system that can run processes");
-    if (pid == 0) {
-        FILE* err = std::freopen(log.c_str(), "w", stderr);
-        (void)err;
-        ::execv(argv[0], argv.data());
-        std::_Exit(127);
+    if (pid < 0) {
+        ::close(log_fd);
+        fail("wgsl tools", std::string("cannot start node: ") + std::strerror(errno), "valid: a system that can run processes");
     }
+    if (pid == 0) {
+        ::dup2(log_fd, STDERR_FILENO); // dup2's copy does not inherit O_CLOEXEC
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    ::close(log_fd);
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
