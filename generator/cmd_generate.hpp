@@ -81,9 +81,8 @@ inline std::string spirv_array(const std::string& name, const std::vector<uint32
 //   round_tripped  compiled back to SPIR-V by glslang's HLSL front end and run on the Vulkan
 //                  harness (hlsl, hlsl60): the HLSL's meaning as glslang reads it, not DXC's
 //                  code generation
-//                  wgsl of compute variants: run on Dawn (Tint's GLSL ES on OpenGL ES)
-//   round_tripped  (wgsl of fragment variants) translated back to SPIR-V by naga and run on
-//                  the Vulkan harness
+//                  wgsl: run on Dawn (Tint's GLSL ES on its OpenGL ES backend), and
+//                  round-tripped through naga too
 //   validated      compiled and reflected, never run: MSL (no Metal compiler on Linux), and
 //                  the HLSL of fp16 variants -- glslang reads min16float as a 32-bit float
 //                  and has no min16float3x3, so a round trip would not run their arithmetic
@@ -95,7 +94,7 @@ inline const char* verification(compile::target t, const variant& v)
     case compile::target::essl: return "executed";
     case compile::target::hlsl50:
     case compile::target::hlsl60: return v.fp16 ? "validated" : "round_tripped";
-    case compile::target::wgsl: return v.stage == pipeline_stage::compute ? "executed" : "round_tripped";
+    case compile::target::wgsl: return "executed";
     default: return "validated";
     }
 }

@@ -14,7 +14,7 @@
 //   createShaderModule).
 //   node aogen_wgsl.mjs to-spirv DIR     for every DIR/<id>.wgsl: naga's SPIR-V as DIR/<id>.spv.out
 //                                        (little-endian words), or DIR/<id>.error
-//   node aogen_wgsl.mjs run DIR          executes a compute chain's WGSL on a real WebGPU device:
+//   node aogen_wgsl.mjs run DIR          executes a chain's WGSL on a real WebGPU device:
 //                                        Dawn's OpenGL ES backend (Tint → GLSL ES, Mesa's llvmpipe
 //                                        through EGL surfaceless), from DIR/chain.txt (below);
 //                                        writes DIR/out.bin, the last pass's output, one byte a
@@ -163,10 +163,12 @@ async function toSpirv() {
 // chain.txt, one line each:
 //   gbuffer W H            depth.f32 (W×H floats, r32float) and, if present, normals.f32 (W×H×4)
 //   noise N                noise.f32 (N×N×4 floats, rgba32float)
-//   pass FILE W H PPI      a compute pass: its WGSL, its output's size, pixels per invocation;
-//                          uniforms<i>.bin its uniform bytes (i from 0); it reads the previous
-//                          pass's output as ao_input
+//   pass FILE W H PPI [VERTEX]  a pass: its WGSL (a compute shader, or with VERTEX the fragment
+//                          shader drawn with that vertex shader's fullscreen triangle), its
+//                          output's size, pixels per invocation; uniforms<i>.bin its uniform
+//                          bytes (i from 0); it reads the previous pass's output as ao_input
 // Bindings follow aogen/bindings.hpp's webgpu model; workgroups are the WGSL's @workgroup_size.
+// Compute passes write rgba8unorm storage textures, fragment passes r8unorm render targets.
 async function runChain() {
     process.env.EGL_PLATFORM ??= "surfaceless"; // no display: Mesa's EGL without a window system
     const webgpu = await load("webgpu");
@@ -197,54 +199,75 @@ async function runChain() {
         } else if (l[0] === "noise") {
             noise = upload(+l[1], +l[1], "rgba32float", floats("noise.f32"), 16);
         } else if (l[0] === "pass") {
-            passes.push({ file: l[1], w: +l[2], h: +l[3], ppi: +l[4] });
+            passes.push({ file: l[1], w: +l[2], h: +l[3], ppi: +l[4], vertex: l[5] });
         }
     }
     const sampler = device.createSampler({ addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
-    const entry = (binding, kind) => ({ binding, visibility: GPUShaderStage.COMPUTE, ...kind });
-    const tex = { texture: { sampleType: "unfilterable-float" } }, smp = { sampler: { type: "non-filtering" } };
-    const ubo = { buffer: { type: "uniform" } }, out = { storageTexture: { access: "write-only", format: "rgba8unorm" } };
+    const text = (file) => readFileSync(join(dir, file), "utf8");
     device.pushErrorScope("validation");
     const encoder = device.createCommandEncoder();
     let previous;
     passes.forEach((p, i) => {
-        const code = readFileSync(join(dir, p.file), "utf8");
+        const code = text(p.file);
+        const fragment = p.vertex !== undefined;
+        const visibility = fragment ? GPUShaderStage.FRAGMENT : GPUShaderStage.COMPUTE;
+        const format = fragment ? "r8unorm" : "rgba8unorm";
+        const entry = (binding, kind) => ({ binding, visibility, ...kind });
+        const tex = { texture: { sampleType: "unfilterable-float" } }, smp = { sampler: { type: "non-filtering" } };
+        const ubo = { buffer: { type: "uniform" } }, out = { storageTexture: { access: "write-only", format } };
         const ao = i === 0;
-        const layout = device.createBindGroupLayout({
-            entries: ao ? [entry(0, ubo), entry(1, tex), entry(2, smp), ...(normals ? [entry(3, tex)] : []), entry(4, tex), entry(5, out)]
-                        : [entry(0, ubo), entry(1, tex), entry(2, smp), entry(3, tex), entry(4, smp), entry(5, out)],
+        // Bindings 0..4 as bindings.hpp's webgpu model lays them out; 5, the storage output, for compute.
+        const roles = ao ? [[0, ubo], [1, tex, depth], [2, smp, sampler], ...(normals ? [[3, tex, normals]] : []), [4, tex, noise]]
+                         : [[0, ubo], [1, tex, depth], [2, smp, sampler], [3, tex, previous], [4, smp, sampler]];
+        const output = device.createTexture({
+            size: [p.w, p.h], format,
+            usage: (fragment ? usage.RENDER_ATTACHMENT : usage.STORAGE_BINDING) | usage.TEXTURE_BINDING | usage.COPY_SRC,
         });
-        const pipeline = device.createComputePipeline({
-            layout: device.createPipelineLayout({ bindGroupLayouts: [layout] }),
-            compute: { module: device.createShaderModule({ code }), entryPoint: "main" },
-        });
+        if (!fragment) roles.push([5, out, output]);
+        const layout = device.createBindGroupLayout({ entries: roles.map(([binding, kind]) => entry(binding, kind)) });
+        const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
         const bytes = readFileSync(join(dir, `uniforms${i}.bin`));
         const buffer = device.createBuffer({ size: Math.max(16, Math.ceil(bytes.length / 16) * 16), usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
         device.queue.writeBuffer(buffer, 0, bytes);
-        const output = device.createTexture({ size: [p.w, p.h], format: "rgba8unorm", usage: usage.STORAGE_BINDING | usage.TEXTURE_BINDING | usage.COPY_SRC });
-        const resources = ao ? [[0, { buffer }], [1, depth.createView()], [2, sampler], ...(normals ? [[3, normals.createView()]] : []), [4, noise.createView()], [5, output.createView()]]
-                             : [[0, { buffer }], [1, depth.createView()], [2, sampler], [3, previous.createView()], [4, sampler], [5, output.createView()]];
-        const group = device.createBindGroup({ layout, entries: resources.map(([binding, resource]) => ({ binding, resource })) });
-        const size = /@workgroup_size\((\d+), (\d+)/.exec(code);
-        const pass = encoder.beginComputePass();
-        pass.setPipeline(pipeline);
-        pass.setBindGroup(0, group);
-        pass.dispatchWorkgroups(Math.ceil(p.w / p.ppi / +size[1]), Math.ceil(p.h / p.ppi / +size[2]));
-        pass.end();
+        const resource = (binding, r) => (binding === 0 ? { buffer } : r instanceof GPUSampler ? r : r.createView());
+        const group = device.createBindGroup({ layout, entries: roles.map(([binding, , r]) => ({ binding, resource: resource(binding, r) })) });
+        if (fragment) {
+            const pipeline = device.createRenderPipeline({
+                layout: pipelineLayout,
+                vertex: { module: device.createShaderModule({ code: text(p.vertex) }), entryPoint: "main" },
+                fragment: { module: device.createShaderModule({ code }), entryPoint: "main", targets: [{ format }] },
+                primitive: { topology: "triangle-list" },
+            });
+            const pass = encoder.beginRenderPass({ colorAttachments: [{ view: output.createView(), loadOp: "clear", clearValue: [0, 0, 0, 0], storeOp: "store" }] });
+            pass.setPipeline(pipeline);
+            pass.setBindGroup(0, group);
+            pass.setViewport(0, 0, p.w, p.h, 0, 1);
+            pass.draw(3);
+            pass.end();
+        } else {
+            const pipeline = device.createComputePipeline({ layout: pipelineLayout, compute: { module: device.createShaderModule({ code }), entryPoint: "main" } });
+            const size = /@workgroup_size\((\d+), (\d+)/.exec(code);
+            const pass = encoder.beginComputePass();
+            pass.setPipeline(pipeline);
+            pass.setBindGroup(0, group);
+            pass.dispatchWorkgroups(Math.ceil(p.w / p.ppi / +size[1]), Math.ceil(p.h / p.ppi / +size[2]));
+            pass.end();
+        }
         previous = output;
         p.output = output;
+        p.texel = fragment ? 1 : 4;
     });
     const last = passes[passes.length - 1];
-    const rowBytes = Math.ceil((last.w * 4) / 256) * 256;
+    const rowBytes = Math.ceil((last.w * last.texel) / 256) * 256;
     const read = device.createBuffer({ size: rowBytes * last.h, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
     encoder.copyTextureToBuffer({ texture: last.output }, { buffer: read, bytesPerRow: rowBytes }, [last.w, last.h]);
     device.queue.submit([encoder.finish()]);
     const error = await device.popErrorScope();
     if (error) throw new Error(error.message.trim());
     await read.mapAsync(GPUMapMode.READ);
-    const rgba = new Uint8Array(read.getMappedRange());
+    const texels = new Uint8Array(read.getMappedRange());
     const r = new Uint8Array(last.w * last.h);
-    for (let y = 0; y < last.h; ++y) for (let x = 0; x < last.w; ++x) r[y * last.w + x] = rgba[y * rowBytes + 4 * x];
+    for (let y = 0; y < last.h; ++y) for (let x = 0; x < last.w; ++x) r[y * last.w + x] = texels[y * rowBytes + last.texel * x];
     writeFileSync(join(dir, "out.bin"), r);
     writeFileSync(join(dir, "device.txt"), `Dawn ${adapter.info.backendType || "opengles"}: ${adapter.info.description}`);
 }

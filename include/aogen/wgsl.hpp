@@ -255,10 +255,12 @@ inline std::vector<std::vector<uint32_t>> to_spirv(const std::vector<wgsl_job>& 
     return out;
 }
 
-// One compute pass of a chain for run_on_dawn: its WGSL, its output's size, the pixels one
-// invocation writes (aogen::pixels_per_invocation) and its uniform bytes.
+// One pass of a chain for run_on_dawn: its WGSL (a compute shader; or a fragment shader and
+// the vertex shader it is drawn with), its output's size, the pixels one invocation writes
+// (aogen::pixels_per_invocation) and its uniform bytes.
 struct dawn_pass {
     std::string wgsl;
+    std::string vertex_wgsl; // empty for a compute pass
     int width = 0, height = 0;
     int pixels_per_invocation = 1;
     std::vector<uint8_t> uniforms;
@@ -271,7 +273,7 @@ struct dawn_result {
     std::string device;
 };
 
-// Executes a compute chain's WGSL on a real WebGPU implementation: Dawn (npm webgpu) on its
+// Executes a chain's WGSL on a real WebGPU implementation: Dawn (npm webgpu) on its
 // OpenGL ES backend, Tint's GLSL ES on Mesa's llvmpipe (EGL surfaceless) — Dawn refuses
 // lavapipe as a Vulkan device. Inputs as aogen::gbuffer and chain_inputs hold them: depth
 // (W×H floats), normals (W×H×4 floats, or none), the noise tile (N×N RGBA32F bytes). Bindings
@@ -288,16 +290,18 @@ inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& 
     for (size_t i = 0; i < passes.size(); ++i) {
         const std::string file = "pass" + std::to_string(i) + ".wgsl";
         detail::write_all(s.file(file), passes[i].wgsl);
+        const std::string vertex = passes[i].vertex_wgsl.empty() ? "" : "pass" + std::to_string(i) + ".vert.wgsl";
+        if (!vertex.empty()) detail::write_all(s.file(vertex), passes[i].vertex_wgsl);
         detail::write_all(s.file("uniforms" + std::to_string(i) + ".bin"), std::string(passes[i].uniforms.begin(), passes[i].uniforms.end()));
         chain += "pass " + file + " " + std::to_string(passes[i].width) + " " + std::to_string(passes[i].height) + " " +
-                 std::to_string(passes[i].pixels_per_invocation) + "\n";
+                 std::to_string(passes[i].pixels_per_invocation) + (vertex.empty() ? "" : " " + vertex) + "\n";
     }
     detail::write_all(s.file("chain.txt"), chain);
     detail::run(t, "run", s.path());
     if (detail::is_file(s.file("run.error"))) {
         std::string message = detail::read_all(s.file("run.error"));
         while (!message.empty() && message.back() == '\n') message.pop_back();
-        fail("wgsl on dawn", message, "valid: a compute chain Dawn's OpenGL ES backend runs");
+        fail("wgsl on dawn", message, "valid: a chain Dawn's OpenGL ES backend runs");
     }
     const std::string ao = detail::read_all(s.file("out.bin"));
     return {std::vector<uint8_t>(ao.begin(), ao.end()), detail::read_all(s.file("device.txt"))};

@@ -1,4 +1,4 @@
-// aogen/wgsl_dawn.hpp — a compute variant's WGSL executed on a real WebGPU implementation.
+// aogen/wgsl_dawn.hpp — a variant's WGSL executed on a real WebGPU implementation.
 //
 //     std::vector<std::string> texts = aogen::emitted_texts(v, aogen::compile::target::wgsl);
 //     auto [tw, th] = aogen::target_size(v, g.width, g.height);
@@ -8,7 +8,8 @@
 // Dawn (npm webgpu) runs the WGSL through Tint's GLSL ES writer on its OpenGL ES backend —
 // Mesa's llvmpipe here (Dawn refuses this machine's lavapipe as a Vulkan device) — with the
 // webgpu binding model's bind groups (bindings.hpp), the same G-buffer, noise and uniform
-// bytes the Vulkan harness uploads. Compute variants only: fragment passes are not drawn here.
+// bytes the Vulkan harness uploads. Compute passes dispatch into rgba8unorm storage textures,
+// fragment passes draw the fullscreen triangle into r8unorm targets.
 #pragma once
 
 #include "chain_inputs.hpp"
@@ -18,16 +19,18 @@ namespace aogen::wgsl {
 
 inline dawn_result run_variant_on_dawn(const variant& v, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
 {
-    if (v.stage != pipeline_stage::compute) fail("wgsl on dawn", to_name(v) + " is a fragment variant", "valid: a compute variant");
     const std::vector<pass_kind> ps = passes(v);
-    if (texts.size() != ps.size() || in.uniforms.size() != ps.size())
+    const size_t per_pass = v.stage == pipeline_stage::compute ? 1 : 2; // codegen's order: vertex, then fragment
+    if (texts.size() != ps.size() * per_pass || in.uniforms.size() != ps.size())
         fail("wgsl on dawn", to_name(v) + ": " + std::to_string(texts.size()) + " texts, " + std::to_string(in.uniforms.size()) + " uniform blocks",
-             "valid: one of each per pass, " + std::to_string(ps.size()));
+             "valid: a text per shader and a block per pass, " + std::to_string(ps.size()) + " passes");
     const auto [tw, th] = target_size(v, g.width, g.height);
     std::vector<dawn_pass> dawn;
     for (size_t i = 0; i < ps.size(); ++i) {
         const bool screen = ps[i] == pass_kind::upsample;
-        dawn.push_back({texts[i], screen ? g.width : tw, screen ? g.height : th, pixels_per_invocation(ps[i], v.stage), in.uniforms[i]});
+        const std::string vertex = per_pass == 2 ? texts[2 * i] : std::string();
+        dawn.push_back({texts[per_pass * i + per_pass - 1], vertex, screen ? g.width : tw, screen ? g.height : th, pixels_per_invocation(ps[i], v.stage),
+                        in.uniforms[i]});
     }
     return run_on_dawn(g.width, g.height, g.depth, g.normals, in.noise_size, in.noise, dawn);
 }
