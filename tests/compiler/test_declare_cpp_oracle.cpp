@@ -13,6 +13,7 @@
 // when neither can be run the test is skipped with a warning.
 
 #include "random_structs.hpp"
+#include "support.hpp"
 
 #include <aogen/declare.hpp>
 #include <aogen/layout.hpp>
@@ -62,7 +63,7 @@ std::string without_prelude(std::string declaration)
 TEST_CASE("C++ compiler oracle: declare(language::cpp) compiles and its static_asserts hold", "[layout][oracle][cpp]")
 {
     if (std::system((std::string("command -v ") + cxx + " >/dev/null 2>&1").c_str()) != 0) {
-        WARN("no C++ compiler '" << cxx << "' on PATH; skipping the C++ declaration oracle");
+        aogen_test::skip_missing_dependency(std::string("no C++ compiler '") + cxx + "' on PATH for the C++ declaration oracle");
         return;
     }
     std::ostringstream unit;

@@ -53,8 +53,9 @@ inline const char* const emitted_target_variants[] = {
     "vbao-2x2-full-box-recon-std-persp-fs"};
 
 // One validated context for the whole run (lavapipe's start-up is not free). Without a
-// device each test fails, or, with AOGEN_TESTS_OPTIONAL_DEPS=1 (support.hpp), gets null
-// and returns.
+// device, or without the validation layer, each test fails, or, with
+// AOGEN_TESTS_OPTIONAL_DEPS=1 (support.hpp), gets null (no device) and returns, or runs
+// unvalidated (no layer).
 inline vulkan::context* shared_context()
 {
     static std::string failure;
@@ -67,6 +68,11 @@ inline vulkan::context* shared_context()
         }
     }();
     if (!ctx) aogen_test::skip_missing_dependency("no Vulkan device: " + failure);
+    // Without the layer every require_clean() would pass on nothing: a missing layer is a
+    // missing dependency like a missing device.
+    else if (!ctx->validation_enabled())
+        aogen_test::skip_missing_dependency(std::string("no Vulkan validation layer (") + vulkan::validation_layer +
+                                            ", Debian's vulkan-validationlayers): require_clean would prove nothing");
     return ctx.get();
 }
 
