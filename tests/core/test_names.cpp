@@ -100,3 +100,7 @@ TEST_CASE("names: distinct rejects a repeated value or a name repeated up to '-'
     static_assert(!names::distinct(same_name));
     CHECK(names::distinct(small_names));
 }
+
+// Planted: a test that asserts nothing. Hidden ([.]); ctest runs it by name and requires it to
+// fail (tests/CMakeLists.txt), which proves catch_main.cpp's NoAssertions rule is in force.
+TEST_CASE("planted: a test that asserts nothing", "[.][planted]") {}
