@@ -10,6 +10,7 @@
 #include <aogen/ao_difference.hpp>
 #include <aogen/emitted.hpp>
 #include <aogen/vulkan/wgsl_round_trip.hpp>
+#include <aogen/wgsl_dawn.hpp>
 
 #include <regex>
 
@@ -50,6 +51,20 @@ inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipe
     // The crease is occluded: the comparison is not between two blank images.
     CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f);
     return difference_of(got.ao, expected.ao);
+}
+
+// `v`'s WGSL `texts` run on Dawn against `v`'s SPIR-V on G-buffer `g` with settings `s`.
+inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, const std::vector<std::string>& texts, const vulkan::gbuffer& g,
+                                        const vulkan::chain_settings& s)
+{
+    const auto [tw, th] = target_size(v, g.width, g.height);
+    const std::vector<uint8_t> bytes = wgsl::run_variant_on_dawn(v, texts, g, inputs_for(v, s, tw, th)).ao;
+    std::vector<float> ao(bytes.size());
+    for (size_t i = 0; i < ao.size(); ++i) ao[i] = bytes[i] / 255.0f;
+    const vulkan::chain_result expected = vulkan::chain(ctx, v).run(g, s);
+    REQUIRE(ao.size() == expected.ao.size());
+    CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f); // not two blank images
+    return difference_of(ao, expected.ao);
 }
 
 // A block as naga lays it out, read from naga's SPIR-V of a WGSL text.
