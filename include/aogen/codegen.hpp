@@ -67,6 +67,11 @@
 //                   numerics (aogen::vulkan counts what the raw images hold), not for a
 //                   renderer: fragment passes then store to an image, which needs the
 //                   device's fragmentStoresAndAtomics, and ESSL 300 cannot express it.
+//   templates       empty (default): generate(v, o) reads the embedded templates. A reader
+//                   (directory_reader(dir), or any function from path to text) replaces
+//                   them wherever the options travel — the Vulkan harness, emitted_texts —
+//                   so a template under development, or a test's planted fault in one
+//                   (tests/mutants/), runs through every consumer unchanged.
 //
 // USAGE
 //     #include <aogen/codegen.hpp>
@@ -154,10 +159,14 @@ inline const char* to_name(resource_kind k) { return names::name_of(resource_kin
 // ---------------------------------------------------------------------------------
 
 // How the sources are generated, beyond the variant (see OPTIONS above).
+// Reads a template by its path relative to the templates directory ("common/core.glsl").
+using template_reader = std::function<std::string(const std::string& path)>;
+
 struct options {
     std::string output_format = "r8"; // compute passes' output image: r8, rgba8, r32f, rgba16f
     bool diagnostics = false;         // every pass also stores its raw, unguarded value (see OPTIONS)
     binding_model model = binding_model::vulkan; // combined samplers, or WebGPU's separate ones (RESOURCES)
+    template_reader templates;        // where generate(v, o) reads templates; empty: the embedded ones
 };
 
 // The output formats options::output_format accepts, in the order error messages list them.
@@ -364,9 +373,6 @@ inline std::vector<define> constants(const variant& v, pass_kind pass)
 // Template texts
 // ---------------------------------------------------------------------------------
 
-// Reads a template by its path relative to the templates directory ("common/core.glsl").
-using template_reader = std::function<std::string(const std::string& path)>;
-
 // Is this copy of aogen built with its templates embedded (aogen/templates_embedded.hpp)?
 inline bool have_embedded_templates()
 {
@@ -532,10 +538,10 @@ inline std::vector<shader_source> generate(const variant& v, const char* templat
     return generate(v, std::string(template_dir), options{});
 }
 
-// The same with the embedded templates.
+// The same with options::templates, or the embedded templates.
 inline std::vector<shader_source> generate(const variant& v, const options& o)
 {
-    return generate(v, template_reader(embedded_template), o);
+    return generate(v, o.templates ? o.templates : template_reader(embedded_template), o);
 }
 inline std::vector<shader_source> generate(const variant& v)
 {

@@ -14,6 +14,8 @@
 #include <aogen/codegen.hpp>
 #include <aogen/compile.hpp>
 
+#include "mutants/mutants.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <spirv_cross/GLSL.std.450.h>
@@ -247,7 +249,7 @@ inline std::vector<float> evaluate_in_ao_pass(const aogen::variant& v, const std
         entry += "    ao_test.r[" + std::to_string(i) + "] = " + expressions[i] + ";\n";
     entry += "}\n";
     const aogen::codegen::template_reader read = [&entry](const std::string& path) {
-        return path == "entry_compute.glsl" ? entry : aogen::codegen::embedded_template(path);
+        return path == "entry_compute.glsl" ? entry : aogen_test::template_under_test(path);
     };
     const aogen::codegen::shader_source s = aogen::codegen::generate_shader(v, aogen::pass_kind::ao, aogen::shader_stage::compute, read);
     const std::vector<uint32_t> words = aogen::compile::optimize_spirv(aogen::compile::glsl_to_spirv(s.glsl, aogen::shader_stage::compute, name), name);

@@ -42,9 +42,9 @@ gl::context* shared_gl(gl::api which)
 void compare_one(vulkan::context& vk, gl::context& gl, const variant& v, compile::target target, const codegen::options& o,
                  const vulkan::gbuffer& g, const vulkan::chain_settings& s)
 {
-    const vulkan::chain_result expected = vulkan::chain(vk, v).run(g, s);
+    const vulkan::chain_result expected = chain_under_test(vk, v).run(g, s);
     const auto [tw, th] = target_size(v, g.width, g.height);
-    const gl::chain_result got = gl::run(gl, v, emitted_texts(v, target, o), g, inputs_for(v, s, tw, th), o);
+    const gl::chain_result got = gl::run(gl, v, emitted_texts(v, target, under_test(o)), g, inputs_for(v, s, tw, th), o);
     REQUIRE(got.width == expected.width);
     REQUIRE(got.height == expected.height);
     const ao_difference d = difference_of(got.ao, expected.ao);

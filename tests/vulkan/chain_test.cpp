@@ -67,7 +67,7 @@ TEST_CASE("vulkan: half resolution of 101x61 is 51x31, every pixel written, fini
             INFO(to_name(v));
             const int w = up == upsample_mode::nearest ? 51 : 101, h = up == upsample_mode::nearest ? 31 : 61;
             CHECK(vulkan::output_size(v, W, H) == std::pair<int, int>{w, h});
-            vulkan::chain c(*ctx, v);
+            vulkan::chain c = chain_under_test(*ctx, v);
             const vulkan::chain_result zero = c.run(g, settings_for(proj), {0.0f});
             const vulkan::chain_result one = c.run(g, settings_for(proj), {1.0f});
             REQUIRE(zero.width == w);
@@ -97,7 +97,7 @@ TEST_CASE("vulkan: a chain bound once runs again and again with the same result,
     variant gtao;
     gtao.tech = technique::gtao;
     gtao.blur = blur_mode::box;
-    const vulkan::chain a(*ctx, ssao), b(*ctx, gtao);
+    const vulkan::chain a = chain_under_test(*ctx, ssao), b = chain_under_test(*ctx, gtao);
     const std::unique_ptr<vulkan::bound_chain> ba = a.bind(g, settings_for(proj)), bb = b.bind(g, settings_for(proj));
     const vulkan::chain_result first = ba->run_once(0.0f);
     // The one-call convenience gives what the bound chain gives.

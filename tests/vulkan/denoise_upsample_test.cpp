@@ -44,8 +44,12 @@ struct scene {
 // full pixel's.
 std::vector<double> denoise_on_cpu(const scene& s, const variant& v, const std::vector<float>& in, int tw, int th)
 {
-    const auto& W = blur_params::denoise_weights;
-    const int R = blur_params::denoise_radius;
+    // The weights of offsets 0, ±1, ±2, written here rather than read from params.hpp (the
+    // constants the shader is generated from), so that a change there shows: offsets 4 apart
+    // share a phase of the 4 × 4 noise tile, and (1/2, 1, 1, 1, 1/2) gives each phase the same
+    // weight (blur_denoise.glsl's header).
+    const double W[] = {1.0, 1.0, 0.5};
+    const int R = 2;
     const int k = v.half_resolution ? 2 : 1;
     auto z_at = [&](int x, int y) { return s.z[pixel(s.W, std::min(x * k, s.W - 1), std::min(y * k, s.H - 1))]; };
     std::vector<double> out(in.size());
@@ -131,8 +135,8 @@ TEST_CASE("vulkan: the denoise pass is blur_denoise.glsl's 5x5 edge-aware filter
                 variant raw = v;
                 raw.blur = blur_mode::none;
                 INFO(to_name(v));
-                const vulkan::chain_result in = vulkan::chain(*ctx, raw).run(s.g, settings_for(s.proj));
-                const vulkan::chain_result out = vulkan::chain(*ctx, v).run(s.g, settings_for(s.proj));
+                const vulkan::chain_result in = chain_under_test(*ctx, raw).run(s.g, settings_for(s.proj));
+                const vulkan::chain_result out = chain_under_test(*ctx, v).run(s.g, settings_for(s.proj));
                 REQUIRE(out.passes == std::vector<std::string>{"ao", "blur_denoise"});
                 REQUIRE(out.width == in.width);
                 const size_t moved = require_equal(out.ao, denoise_on_cpu(s, v, in.ao, in.width, in.height), in.ao, in.width);
@@ -153,8 +157,8 @@ TEST_CASE("vulkan: the depth-aware upsample is upsample.glsl's joint bilateral u
             variant nearest = v;
             nearest.upsample = upsample_mode::nearest;
             INFO(to_name(v));
-            const vulkan::chain_result target = vulkan::chain(*ctx, nearest).run(s.g, settings_for(s.proj));
-            const vulkan::chain_result out = vulkan::chain(*ctx, v).run(s.g, settings_for(s.proj));
+            const vulkan::chain_result target = chain_under_test(*ctx, nearest).run(s.g, settings_for(s.proj));
+            const vulkan::chain_result out = chain_under_test(*ctx, v).run(s.g, settings_for(s.proj));
             REQUIRE(out.passes.back() == "upsample");
             REQUIRE(out.width == s.W);
             REQUIRE(out.height == s.H);

@@ -52,7 +52,7 @@ size_t geometry_pixels(const variant& v, const vulkan::gbuffer& g)
 // Runs the gtao variant `v` (diagnostic build) on the crease with its AO pass's strength replaced.
 vulkan::chain_result run_with_strength(vulkan::context& ctx, const variant& v, const crease_setup& c, float strength)
 {
-    const vulkan::chain diagnostic(ctx, v, {true});
+    const vulkan::chain diagnostic = chain_under_test(ctx, v, {true});
     const vulkan::gpu_gbuffer g(ctx, c.host);
     const auto [TW, TH] = vulkan::target_size(v, c.W, c.H);
     vulkan::chain_inputs in = vulkan::inputs_for(v, settings_for(c.proj), TW, TH);
@@ -77,8 +77,8 @@ TEST_CASE("vulkan: a diagnostic chain gives the shipped AO and clean raw counts 
                 CHECK_THROWS_AS(vulkan::chain(*ctx, v, {true}), aogen::error);
                 continue;
             }
-            const vulkan::chain_result shipped = vulkan::chain(*ctx, v).run(c.host, settings_for(c.proj));
-            const vulkan::chain_result diagnostic = vulkan::chain(*ctx, v, {true}).run(c.host, settings_for(c.proj));
+            const vulkan::chain_result shipped = chain_under_test(*ctx, v).run(c.host, settings_for(c.proj));
+            const vulkan::chain_result diagnostic = chain_under_test(*ctx, v, {true}).run(c.host, settings_for(c.proj));
             CHECK(shipped.raw.empty());
             CHECK(diagnostic.ao == shipped.ao);
             REQUIRE(diagnostic.raw.size() == passes(v).size());

@@ -94,7 +94,7 @@ TEST_CASE("vulkan: fragment and compute variants of the same axes give the same 
         compared.push_back(variant_from_name(name));
     for (const variant& v : compared) {
         INFO(to_name(v));
-        vulkan::chain fragment(*ctx, v), compute(*ctx, as_compute(v));
+        const vulkan::chain fragment = chain_under_test(*ctx, v), compute = chain_under_test(*ctx, as_compute(v));
         const vulkan::chain_result f = fragment.run(s.g, settings_for(s.proj));
         const vulkan::chain_result c = compute.run(s.g, settings_for(s.proj));
         CHECK(max_difference(f, c) <= 1.0f / 255.0f);
@@ -115,7 +115,7 @@ TEST_CASE("vulkan: fragment variants write every pixel, two clear values give th
     const crease_scene s;
     for (const variant& v : fragment_seeds()) {
         INFO(to_name(v));
-        vulkan::chain c(*ctx, v);
+        vulkan::chain c = chain_under_test(*ctx, v);
         const vulkan::chain_result zero = c.run(s.g, settings_for(s.proj), {0.0f});
         const vulkan::chain_result one = c.run(s.g, settings_for(s.proj), {1.0f});
         CHECK(zero.ao == one.ao); // the clear value never shows through
@@ -133,7 +133,7 @@ TEST_CASE("vulkan: depth as D32_SFLOAT gives bit-identical AO to R32_SFLOAT")
     vs.back().tech = technique::gtao;
     for (const variant& v : vs) {
         INFO(to_name(v));
-        vulkan::chain c(*ctx, v);
+        vulkan::chain c = chain_under_test(*ctx, v);
         vulkan::run_options o;
         const vulkan::chain_result r32 = c.run(s.g, settings_for(s.proj), o);
         o.depth = vulkan::depth_format::d32_sfloat;
@@ -149,7 +149,7 @@ TEST_CASE("vulkan: D32_SFLOAT refuses depth outside 0 to 1, R32_SFLOAT takes it"
     if (!ctx) return;
     crease_scene s;
     s.g.depth[5] = std::nanf("");
-    vulkan::chain c(*ctx, variant{});
+    vulkan::chain c = chain_under_test(*ctx, variant{});
     vulkan::run_options o;
     o.depth = vulkan::depth_format::d32_sfloat;
     CHECK_THROWS_AS(c.run(s.g, settings_for(s.proj), o), aogen::error);

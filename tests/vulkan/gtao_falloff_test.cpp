@@ -47,7 +47,7 @@ TEST_CASE("vulkan: gtao's falloff and thin-occluder compensation only remove occ
     for (pipeline_stage stage : {pipeline_stage::compute, pipeline_stage::fragment}) {
         const variant v = variant_from_name(std::string("gtao-4x4-full-noblur-gbufworld-std-persp-") + (stage == pipeline_stage::compute ? "cs" : "fs"));
         INFO(to_name(v));
-        const vulkan::chain chain(*ctx, v);
+        const vulkan::chain chain = chain_under_test(*ctx, v);
         const std::vector<float> hard = c.ao(chain, 0, 0);
         // The corner is occluded under the hard cut-off: there is something to fade.
         REQUIRE(*std::min_element(hard.begin(), hard.end()) < 0.9f);

@@ -4,7 +4,7 @@
 //     vulkan::context* ctx = shared_context();   // null (tests return) when skipped
 //     vulkan::gbuffer g = facing_plane(w, h, proj);
 //     vulkan::gbuffer c = crease(w, h, tan_half_fov_y, proj);   // floor + wall, some background
-//     vulkan::chain_result r = vulkan::chain(*ctx, v).run(g, settings_for(proj));
+//     vulkan::chain_result r = chain_under_test(*ctx, v).run(g, settings_for(proj));   // AOGEN_MUTANT planted
 //     require_clean(*ctx);                        // no validation message so far
 //     check_facing_plane(*ctx, v);                // AO 1 on the plane, exactly 1 on background
 #pragma once
@@ -12,6 +12,7 @@
 #include <aogen/vulkan/chain.hpp>
 #include <aogen/vulkan/device.hpp>
 
+#include "mutants/mutants.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -74,6 +75,14 @@ inline vulkan::context* shared_context()
         aogen_test::skip_missing_dependency(std::string("no Vulkan validation layer (") + vulkan::validation_layer +
                                             ", Debian's vulkan-validationlayers): require_clean would prove nothing");
     return ctx.get();
+}
+
+// `v`'s chain with its templates read through template_under_test (mutants/mutants.hpp):
+// the embedded ones, or with AOGEN_MUTANT's fault planted.
+inline vulkan::chain chain_under_test(vulkan::context& ctx, const variant& v, vulkan::chain_options o = {})
+{
+    o.templates = template_under_test;
+    return vulkan::chain(ctx, v, o);
 }
 
 inline size_t pixel(int w, int x, int y) { return static_cast<size_t>(y) * w + x; }
@@ -162,7 +171,7 @@ inline void check_facing_plane(vulkan::context& ctx, const variant& v)
     const mat4 proj = perspective(0.9f, float(W) / H, 0.1f, 100.0f);
     const vulkan::gbuffer g = facing_plane(W, H, proj);
     INFO(to_name(v));
-    vulkan::chain c(ctx, v);
+    vulkan::chain c = chain_under_test(ctx, v);
     const vulkan::chain_result r = c.run(g, settings_for(proj));
     const auto [TW, TH] = vulkan::output_size(v, W, H);
     const bool screen_sized = TW == W; // the depth-aware upsample's output, or a full-resolution target

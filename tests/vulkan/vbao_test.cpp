@@ -111,7 +111,7 @@ TEST_CASE("vulkan: vbao, an open plane is exactly 1 at any tilt, whatever the th
             const variant v = vbao_variant(4, 4, false, pipeline_stage::compute);
             vulkan::chain_settings s = settings_for(proj);
             s.vbao.radius = 1.5f, s.vbao.thickness = thickness;
-            const vulkan::chain_result r = vulkan::chain(*ctx, v).run(g, s);
+            const vulkan::chain_result r = chain_under_test(*ctx, v).run(g, s);
             INFO("tilt " << tilt_degrees << " thickness " << thickness);
             for (size_t i = 0; i < r.ao.size(); ++i) {
                 INFO("pixel " << i % W << ", " << i / W << (g.depth[i] < 1.0f ? " (plane)" : " (background)"));
@@ -162,7 +162,7 @@ TEST_CASE("vulkan: vbao with a small thickness occludes less than gtao around a 
         s.vbao.radius = vbao_params::radius_per_ao_radius * float(R);
         s.vbao.thickness = thickness;
         s.vbao.strength = s.gtao.strength = 1.0f;
-        return vulkan::chain(*ctx, v).run(g, s).ao;
+        return chain_under_test(*ctx, v).run(g, s).ao;
     };
     struct score {
         double mean_ao = 0, mean_truth = 0, mae = 0;

@@ -45,7 +45,7 @@ inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipe
     const vulkan::gpu_gbuffer gpu(ctx, g);
     const auto [tw, th] = target_size(v, g.width, g.height);
     const vulkan::chain_result got = vulkan::bound_chain(ctx, passes, gpu, inputs_for(v, s, tw, th), tw, th).run_once();
-    const vulkan::chain_result expected = vulkan::chain(ctx, v).run(g, s);
+    const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
     REQUIRE(got.width == expected.width);
     REQUIRE(got.height == expected.height);
     // The crease is occluded: the comparison is not between two blank images.
@@ -61,7 +61,7 @@ inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, 
     const std::vector<uint8_t> bytes = wgsl::run_variant_on_dawn(v, texts, g, inputs_for(v, s, tw, th)).ao;
     std::vector<float> ao(bytes.size());
     for (size_t i = 0; i < ao.size(); ++i) ao[i] = bytes[i] / 255.0f;
-    const vulkan::chain_result expected = vulkan::chain(ctx, v).run(g, s);
+    const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
     REQUIRE(ao.size() == expected.ao.size());
     CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f); // not two blank images
     return difference_of(ao, expected.ao);

@@ -67,6 +67,7 @@ struct run_options {
 
 struct chain_options {
     bool diagnostics = false; // every pass also stores its raw value (codegen::options::diagnostics)
+    codegen::template_reader templates; // codegen::options::templates: empty, the embedded ones
 };
 
 // chain_settings, target_size, output_size and inputs_for are aogen/chain_inputs.hpp's.
@@ -105,6 +106,7 @@ private:
     {
         codegen::options c;
         c.diagnostics = o.diagnostics;
+        c.templates = o.templates;
         return c;
     }
 

@@ -19,13 +19,16 @@
 
 namespace aogen::vulkan {
 
-inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const variant& v, compile::target target)
+// `v`'s passes built from `hlsl`, its `target` texts in codegen's order (emitted_texts(v,
+// target), or a copy a test has edited).
+inline std::unique_ptr<pass_pipelines> hlsl_passes(context& ctx, const variant& v, compile::target target, const std::vector<std::string>& hlsl)
 {
     if (target != compile::target::hlsl50 && target != compile::target::hlsl60)
         fail("hlsl round trip target", compile::to_name(target), "valid: hlsl, hlsl60");
     spirv_cache cache;
     std::vector<codegen::shader_source> sources = codegen::generate(v);
-    const std::vector<std::string> hlsl = emitted_texts(v, target);
+    if (hlsl.size() != sources.size())
+        fail("hlsl round trip of " + to_name(v), std::to_string(hlsl.size()) + " texts", "valid: one per shader, " + std::to_string(sources.size()));
     for (size_t i = 0; i < sources.size(); ++i) {
         codegen::shader_source& s = sources[i];
         s.glsl = hlsl[i]; // the cache's key: the pass's text is the HLSL now
@@ -33,6 +36,12 @@ inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const varia
     }
     return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (" + compile::to_name(target) + " round trip)", v.stage, v.workgroup_x,
                                             v.workgroup_y, sources, &cache);
+}
+
+// `v`'s passes built from its emitted HLSL of `target` (hlsl50 or hlsl60).
+inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const variant& v, compile::target target)
+{
+    return hlsl_passes(ctx, v, target, emitted_texts(v, target));
 }
 
 } // namespace aogen::vulkan

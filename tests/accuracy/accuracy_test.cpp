@@ -1,0 +1,212 @@
+// Each technique's AO against the truth, on the GPU: the variants users get (default axes
+// and default settings), compute and fragment, the AO pass alone, the denoise chain and
+// reconstructed normals, run through the Vulkan harness on the closed-form scenes of
+// DESIGN.md (crease, groove, wall, sphere on a plane), a thin plank over a floor (the
+// one scene here whose occluders have a back side within reach: VBAO's thickness and a
+// wedge's far edge matter there) and the floor to the horizon, and
+// scored against the Embree reference (aogen_report/reference.hpp, itself held to the
+// closed forms by the truth: and report: tests).
+//
+// Two figures per variant and scene, each bounded where a real bug lands outside:
+//   - the RMSE against the truth, from above: how far from the truth the technique may be;
+//   - the occlusion ratio, mean(1 - AO) / mean(1 - truth) over the pixels with geometry,
+//     from both sides: how much darker or lighter than the truth it reads. A change users
+//     would see — the occlusion a fifth stronger or weaker — moves it by 20 %; the bands are
+//     ±10 % of where the product reads (measured on lavapipe; a GPU's AO differs by at most
+//     1/255 a pixel, which moves the ratio by well under 1 %), and the test checks that its
+//     own bands reject the product's image with the occlusion scaled by 0.8 and by 1.2.
+//   - on the floor to the horizon the truth is 1 at every pixel: every pixel within 1/255.
+// The planted faults these tests must catch are in tests/mutants/mutants.json
+// (`ctest -L mutants`).
+#include "vulkan/harness.hpp"
+
+#include <aogen_report/metrics.hpp>
+#include <aogen_report/reference.hpp>
+#include <aogen_report/settings.hpp>
+#include <aogen_scenes/gbuffer.hpp>
+
+#include <iostream>
+#include <map>
+
+using namespace aogen;
+using namespace aogen_test;
+
+namespace {
+
+constexpr int width = 160, height = 90; // half resolution: 80 × 45
+constexpr int reference_grid = 24;      // 576 rays a pixel: a standard error of about 0.02 a pixel, 1e-4 on a mean
+
+// A built-in scene at width × height with its G-buffer tracer and reference image.
+struct truth_scene {
+    scenes::scene scene;
+    std::unique_ptr<truth::scene> tracer;
+    aogen_report::reference truth;
+};
+
+const truth_scene& truth_of(const std::string& name)
+{
+    static std::map<std::string, truth_scene> cache;
+    auto found = cache.find(name);
+    if (found != cache.end()) return found->second;
+    truth_scene t;
+    t.scene = scenes::builtin_scene(name);
+    t.scene.camera.width = width, t.scene.camera.height = height;
+    t.tracer = scenes::make_tracer(t.scene);
+    scenes::gbuffer_options world;
+    world.use_scene_normals = false;
+    world.normals = scenes::normal_space::world;
+    t.truth = aogen_report::trace_reference(*t.tracer, scenes::render_gbuffer(t.scene, *t.tracer, world), t.scene.ao_radius, reference_grid);
+    return cache.emplace(name, std::move(t)).first->second;
+}
+
+// `v` on scene `t` as the report runs it (its G-buffer, default settings), at full resolution.
+std::vector<float> ao_of(vulkan::context& ctx, const variant& v, const truth_scene& t)
+{
+    scenes::gbuffer_options go;
+    go.use_scene_normals = false;
+    go.face_camera = false;
+    go.normals = v.normals == normal_source::gbuffer_view ? scenes::normal_space::view : scenes::normal_space::world;
+    const vulkan::gbuffer g = scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(t.scene, v), *t.tracer, go));
+    const vulkan::chain_result r = chain_under_test(ctx, v).run(g, aogen_report::default_settings(v, t.scene));
+    REQUIRE(r.width == width); // every variant here ends at full resolution (the upsample, or full)
+    REQUIRE(r.height == height);
+    return r.ao;
+}
+
+// mean(1 - ao) / mean(1 - truth) over the pixels with geometry.
+double occlusion_ratio(const std::vector<float>& ao, const aogen_report::reference& truth)
+{
+    double ours = 0, theirs = 0;
+    for (size_t i = 0; i < ao.size(); ++i)
+        if (truth.valid[i]) ours += 1.0 - ao[i], theirs += 1.0 - truth.ao[i];
+    return ours / theirs;
+}
+
+// The image with its occlusion 1 - ao scaled by k (clamped to [0, 1]).
+std::vector<float> occlusion_scaled(std::vector<float> ao, double k)
+{
+    for (float& a : ao) a = float(std::clamp(1.0 - k * (1.0 - a), 0.0, 1.0));
+    return ao;
+}
+
+// How far from the truth a variant may be on one scene.
+struct bound {
+    double rmse_max; // RMSE against the truth at most this
+    double ratio;    // the occlusion ratio where the product reads; within ±10 % of it
+};
+
+// A variant (and the variants that must read exactly as it does) and its bounds per scene.
+struct expected {
+    std::vector<std::string> variants;
+    std::map<std::string, bound> on;
+};
+
+bool within(const bound& b, const std::vector<float>& ao, const aogen_report::reference& truth)
+{
+    const double rmse = aogen_report::compare(ao, truth.ao, truth.valid).rmse;
+    return rmse <= b.rmse_max && std::fabs(occlusion_ratio(ao, truth) - b.ratio) <= 0.1 * b.ratio;
+}
+
+// Each variant of `e` on each scene against its bound, and the bounds against the product's
+// image with its occlusion scaled by 0.8 and 1.2.
+void check_against_truth(const expected& e)
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    for (const std::string& name : e.variants)
+        for (const auto& [scene, b] : e.on) {
+            INFO(name << " on " << scene);
+            const truth_scene& t = truth_of(scene);
+            const std::vector<float> ao = ao_of(*ctx, variant_from_name(name), t);
+            const aogen_report::error_metrics m = aogen_report::compare(ao, t.truth.ao, t.truth.valid);
+            const double r = occlusion_ratio(ao, t.truth);
+            std::cout << name << " " << scene << ": rmse " << m.rmse << ", occlusion ratio " << r << "\n";
+            INFO("RMSE " << m.rmse << " (at most " << b.rmse_max << "), occlusion ratio " << r << " (" << b.ratio << " ± 10 %)");
+            CHECK(m.non_finite == 0);
+            CHECK(m.rmse <= b.rmse_max);
+            CHECK(std::fabs(r - b.ratio) <= 0.1 * b.ratio);
+            // The bands can fail: the product's own image, a fifth darker or lighter, is outside.
+            CHECK_FALSE(within(b, occlusion_scaled(ao, 0.8), t.truth));
+            CHECK_FALSE(within(b, occlusion_scaled(ao, 1.2), t.truth));
+        }
+    require_clean(*ctx);
+}
+
+// `v` on the floor to the horizon, whose truth is 1 at every pixel: every pixel within
+// 1/255 but the floor's first `rows_left_out` rows (its horizon), which must still be at
+// least `horizon_floor`.
+void check_open_floor(const std::string& name, int rows_left_out = 0, float horizon_floor = 1.0f)
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const truth_scene& t = truth_of("far_floor");
+    const std::vector<float> ao = ao_of(*ctx, variant_from_name(name), t);
+    int first_row = height;
+    for (size_t i = 0; i < ao.size(); ++i)
+        if (t.truth.valid[i]) first_row = std::min(first_row, int(i / width));
+    REQUIRE(first_row < height / 2); // the horizon is in the image's upper half
+    for (int y = first_row; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t i = size_t(y) * width + x;
+            if (!t.truth.valid[i]) continue;
+            INFO(name << ": pixel " << x << ", " << y << " reads " << ao[i] * 255 << "/255 (the floor's first row is " << first_row << ")");
+            if (y < first_row + rows_left_out) REQUIRE(ao[i] >= horizon_floor);
+            else REQUIRE(ao[i] >= 1.0f - 1.0f / 255.0f);
+        }
+}
+
+} // namespace
+
+// The bounds were measured on lavapipe (2026-12-02): RMSE × 1.1 + 0.002, rounded up; the
+// ratio as read. A fragment variant reads as its compute twin (fragment_test.cpp holds
+// them equal), so it shares its bounds.
+TEST_CASE("accuracy: ssao at default settings, against the truth on the closed-form scenes")
+{
+    // SSAO's defaults (seed 000's strength and radius) read a sixth of the true occlusion:
+    // issue 23's defect, stated here so that it moves only on purpose.
+    check_against_truth({{"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "ssao-s16-half-bilateral-gbufworld-std-persp-fs"},
+                         {{"crease", {0.102, 0.144}}, {"groove", {0.079, 0.098}}, {"sphere_on_plane", {0.068, 0.110}}, {"plank", {0.062, 0.264}}, {"wall", {0.110, 0.163}}}});
+    check_against_truth({{"ssao-s16-full-noblur-gbufworld-std-persp-cs"}, // the AO pass alone
+                         {{"crease", {0.098, 0.178}}, {"groove", {0.077, 0.135}}, {"sphere_on_plane", {0.067, 0.102}}, {"plank", {0.057, 0.242}}, {"wall", {0.110, 0.166}}}});
+    check_against_truth({{"ssao-s16-half-bilateral-recon-std-persp-cs"}, // normals reconstructed from depth
+                         {{"crease", {0.102, 0.146}}, {"groove", {0.068, 0.211}}, {"sphere_on_plane", {0.068, 0.110}}, {"plank", {0.058, 0.456}}, {"wall", {0.110, 0.163}}}});
+}
+
+TEST_CASE("accuracy: gtao at default settings, against the truth on the closed-form scenes")
+{
+    check_against_truth({{"gtao-2x3-half-bilateral-gbufworld-std-persp-cs", "gtao-2x3-half-bilateral-gbufworld-std-persp-fs"},
+                         {{"crease", {0.035, 0.874}}, {"groove", {0.021, 0.886}}, {"sphere_on_plane", {0.029, 1.192}}, {"plank", {0.066, 0.685}}, {"wall", {0.038, 0.953}}}});
+    check_against_truth({{"gtao-2x3-full-noblur-gbufworld-std-persp-cs"},
+                         {{"crease", {0.037, 0.890}}, {"groove", {0.028, 0.885}}, {"sphere_on_plane", {0.041, 1.109}}, {"plank", {0.062, 0.457}}, {"wall", {0.045, 0.948}}}});
+    check_against_truth({{"gtao-2x2-half-denoise-gbufworld-std-persp-cs"}, // the denoise pass
+                         {{"crease", {0.033, 0.880}}, {"groove", {0.024, 0.868}}, {"sphere_on_plane", {0.028, 1.125}}, {"plank", {0.066, 0.647}}, {"wall", {0.038, 0.954}}}});
+    check_against_truth({{"gtao-2x3-half-bilateral-recon-std-persp-cs"},
+                         {{"crease", {0.035, 0.863}}, {"groove", {0.027, 0.798}}, {"sphere_on_plane", {0.030, 1.180}}, {"plank", {0.057, 1.276}}, {"wall", {0.040, 0.922}}}});
+}
+
+TEST_CASE("accuracy: vbao at default settings, against the truth on the closed-form scenes")
+{
+    check_against_truth({{"vbao-2x3-half-bilateral-gbufworld-std-persp-cs", "vbao-2x3-half-bilateral-gbufworld-std-persp-fs"},
+                         {{"crease", {0.038, 1.080}}, {"groove", {0.025, 1.057}}, {"sphere_on_plane", {0.022, 0.973}}, {"plank", {0.060, 0.216}}, {"wall", {0.039, 1.083}}}});
+    check_against_truth({{"vbao-2x3-full-noblur-gbufworld-std-persp-cs"},
+                         {{"crease", {0.048, 1.093}}, {"groove", {0.036, 1.050}}, {"sphere_on_plane", {0.043, 0.966}}, {"plank", {0.061, 0.183}}, {"wall", {0.052, 1.077}}}});
+}
+
+TEST_CASE("accuracy: gtao and vbao read the floor to the horizon as open, every pixel")
+{
+    for (const char* v : {"gtao-2x3-half-bilateral-gbufworld-std-persp-cs", "gtao-2x3-full-noblur-gbufworld-std-persp-cs",
+                          "gtao-2x2-half-denoise-gbufworld-std-persp-cs", "gtao-2x3-half-bilateral-recon-std-persp-cs",
+                          "vbao-2x3-half-bilateral-gbufworld-std-persp-cs", "vbao-2x3-full-noblur-gbufworld-std-persp-cs"})
+        check_open_floor(v);
+}
+
+TEST_CASE("accuracy: ssao reads the floor to the horizon as open but for its first row")
+{
+    // A finding of this test: at 160 × 90 SSAO darkens the floor's first row (2 km away,
+    // one row spanning hundreds of metres) to 238/255 — its samples land on the silhouette
+    // row's texel centres, which lie above the plane under them. Issue 23 (every SSAO
+    // decision continuous) is where it is fixed; until then the row is held where it is.
+    for (const char* v : {"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "ssao-s16-full-noblur-gbufworld-std-persp-cs",
+                          "ssao-s16-half-bilateral-recon-std-persp-cs"})
+        check_open_floor(v, 1, 236.0f / 255.0f);
+}

@@ -1,0 +1,40 @@
+// The planted faults' catalogue (tests/mutants/mutants.json) as README § Planted faults shows
+// it: one row per mutant, in the catalogue's order, and the counts README states. A mutant
+// added without its row, or a row whose mutant is gone, fails here.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+TEST_CASE("mutants: README's table of planted faults is tests/mutants/mutants.json's", "[readme]")
+{
+    std::ifstream json_in(AOGEN_MUTANTS_FILE);
+    REQUIRE(json_in);
+    const nlohmann::json catalogue = nlohmann::json::parse(json_in);
+    std::vector<std::string> names;
+    size_t kill_tests = 0;
+    for (const nlohmann::json& m : catalogue.at("mutants")) {
+        names.push_back(m.at("name"));
+        kill_tests += m.at("killed_by").size();
+        CHECK(!m.at("killed_by").empty());
+    }
+
+    std::ifstream readme_in(AOGEN_SOURCE_DIR "/README.md");
+    REQUIRE(readme_in);
+    std::stringstream text;
+    text << readme_in.rdbuf();
+    const std::string readme = text.str();
+    std::vector<std::string> rows;
+    const std::regex row("\\n\\| `([a-z0-9_]+)` \\| [^\\n]*\\| `[^\\n]*\\|");
+    const size_t table = readme.find("| mutant | planted in | the fault | killed by |");
+    REQUIRE(table != std::string::npos);
+    const std::string after = readme.substr(table, readme.find("\n\n", table) - table);
+    for (std::sregex_iterator i(after.begin(), after.end(), row), end; i != end; ++i) rows.push_back((*i)[1]);
+    CHECK(rows == names);
+    CHECK(readme.find(std::to_string(names.size()) + " mutants, " + std::to_string(kill_tests) + " kill tests") != std::string::npos);
+}
