@@ -70,7 +70,7 @@ int main(int argc, char** argv)
         std::cerr << "aogen: " << e.what() << "\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "aogen: " << e.what() << "\n";
+        std::cerr << "aogen: " << aogen::tools::exception_line(e) << "\n";
         return 1;
     }
     return 0;

@@ -48,6 +48,12 @@ show_report() {
   grep -E '^SUMMARY|^MS:' "$log" | cut -c1-240 | sed 's/^/  /' || true
 }
 
+# A new seed each run, so that runs explore rather than repeat; printed, and AOGEN_FUZZ_SEED
+# repeats a run's mutations.
+# libFuzzer's -seed takes 1..2^31-1 (0 means "pick one", unprinted).
+seed=${AOGEN_FUZZ_SEED:-$(( $(od -An -N4 -tu4 /dev/urandom | tr -d ' ') % 2147483647 + 1 ))}
+echo "fuzz: seed $seed (AOGEN_FUZZ_SEED=$seed to repeat)"
+
 failed=()
 for target in struct variants scene; do
   corpus=build-fuzz/corpus/$target findings=build-fuzz/findings/$target log=build-fuzz/logs/$target.log
@@ -63,17 +69,17 @@ for target in struct variants scene; do
   fi
   echo "fuzz: $target for ${seconds}s (log: $log)"
   start=$SECONDS
-  # -seed: the same mutations each run, so a short CI run is repeatable; -timeout: seconds
+  # -seed: printed above; -timeout: seconds
   # one input may take before it counts as a hang; -max_len: room for ~16 000 levels of
   # nesting; -len_control=0: inputs may be that long at once, not only after a slow ramp.
   # shellcheck disable=SC2086 # AOGEN_FUZZ_FLAGS is a list of flags
-  if build-fuzz/tests/fuzz/aogen_fuzz_$target -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -seed=1 \
+  if build-fuzz/tests/fuzz/aogen_fuzz_$target -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -seed="$seed" \
        -max_len=32768 -len_control=0 -dict=tests/fuzz/$target.dict -artifact_prefix="$findings/" -print_final_stats=1 \
        ${AOGEN_FUZZ_FLAGS:-} "$corpus" tests/fuzz/corpus/$target >"$log" 2>&1; then
     grep -E '^stat::(number_of_executed_units|new_units_added|peak_rss_mb)|^#[0-9]+.*DONE' "$log" | sed 's/^/  /' || true
     echo "fuzz: $target: nothing found in $((SECONDS - start))s"
   else
-    failed+=("$target: fuzzing found an input")
+    failed+=("$target: fuzzing found an input (seed $seed)")
     show_report "$log"
     echo "fuzz: $target: FOUND something after $((SECONDS - start))s: $(grep -o 'Test unit written to .*' "$log" || echo "see $log")"
   fi

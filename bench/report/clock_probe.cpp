@@ -17,6 +17,7 @@
 // clocks: [{t_ms, mhz}], gaps: [{gap_ms, first_ms, median_ms}]}. A benchmark, not a test:
 // it asserts nothing and never changes a clock or power setting.
 #include <aogen_report/clocks.hpp>
+#include <aogen_tools/options.hpp>
 #include <aogen_report/settings.hpp>
 
 #include <aogen/vulkan/timing.hpp>
@@ -115,7 +116,7 @@ int main(int argc, char** argv)
         if (out.empty()) std::cout << text;
         else aogen::tools::write_file(out, text);
     } catch (const std::exception& e) {
-        std::cerr << "aogen_clock_probe: " << e.what() << "\n";
+        std::cerr << "aogen_clock_probe: " << aogen::tools::exception_line(e) << "\n";
         return 1;
     }
     return 0;

@@ -314,7 +314,7 @@ int main(int argc, char** argv)
         std::cerr << "aogen_report: " << e.what() << "\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "aogen_report: " << e.what() << "\n";
+        std::cerr << "aogen_report: " << aogen::tools::exception_line(e) << "\n";
         return 1;
     }
     return 0;

@@ -11,6 +11,7 @@
 // largest difference (a Markdown table, BENCHMARKS.md keeps it); exits 1 when a pixel differs
 // by more than 1/255.
 #include <aogen_report/arguments.hpp>
+#include <aogen_tools/options.hpp>
 #include <aogen_report/run.hpp>
 #include <aogen_report/settings.hpp>
 
@@ -135,7 +136,7 @@ int main(int argc, char** argv)
         }
         return ok ? 0 : 1;
     } catch (const std::exception& e) {
-        std::cerr << "aogen_target_check: " << e.what() << "\n";
+        std::cerr << "aogen_target_check: " << aogen::tools::exception_line(e) << "\n";
         return 1;
     }
 }

@@ -14,6 +14,7 @@
 //
 // Prints a Markdown table (BENCHMARKS.md keeps them) and writes every figure to --out.
 #include <aogen_report/arguments.hpp>
+#include <aogen_tools/options.hpp>
 #include <aogen_report/tune.hpp>
 
 #include <aogen_tools/files.hpp>
@@ -111,7 +112,7 @@ int main(int argc, char** argv)
                            {"device", ctx.device_name()}, {"variants", results}};
         aogen::tools::write_file(out, doc.dump(2) + "\n");
     } catch (const std::exception& e) {
-        std::cerr << "aogen_tune: " << e.what() << "\n";
+        std::cerr << "aogen_tune: " << aogen::tools::exception_line(e) << "\n";
         return 1;
     }
     return 0;

@@ -279,7 +279,10 @@ private:
             fs::remove_all(root_, ec);
             fs::create_directories(root_ / "new", ec);
             if (!ec) fs::create_directories(root_ / "old", ec);
-            if (ec) fail(detail::shown(root_), "cannot be created: " + ec.message(), "valid: a writable directory beside the output directory");
+            // Named by the folder the user gave: the staging folder is ours, not theirs.
+            if (ec)
+                fail(detail::shown(folder), "cannot be written: no staging folder can be made beside it (" + ec.message() + ")",
+                     "valid: a writable directory beside the output directory");
         }
         ~staging()
         {
@@ -295,7 +298,7 @@ private:
             std::ofstream out(p, std::ios::binary | std::ios::trunc);
             out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
             out.close();
-            if (ec || !out) fail(detail::shown(p), "cannot be written", "valid: room and permission beside the output directory");
+            if (ec || !out) fail(detail::shown(folder_ / relative), "cannot be written", "valid: room and permission beside the output directory");
         }
 
         // Renames each staged file over its destination (the old one kept in "old"), all
@@ -309,9 +312,9 @@ private:
                     const fs::path dest = folder_ / relative, old = root_ / "old" / relative;
                     make_folders(dest.parent_path(), made_folders);
                     const bool existed = detail::target_type(dest) == fs::file_type::regular;
-                    if (existed) move(dest, old);
+                    if (existed) move(dest, old, dest);
                     done.push_back({relative, existed});
-                    move(root_ / "new" / relative, dest);
+                    move(root_ / "new" / relative, dest, dest);
                 }
             } catch (...) {
                 undo(done, made_folders);
@@ -320,12 +323,13 @@ private:
         }
 
     private:
-        static void move(const fs::path& from, const fs::path& to)
+        // Renames `from` to `to`; a failure names `user_path`, the output file concerned.
+        static void move(const fs::path& from, const fs::path& to, const fs::path& user_path)
         {
             std::error_code ec;
             fs::create_directories(to.parent_path(), ec);
             fs::rename(from, to, ec);
-            if (ec) fail(detail::shown(to), "cannot be written: " + ec.message(), "valid: a writable output directory");
+            if (ec) fail(detail::shown(user_path), "cannot be written: " + ec.message(), "valid: a writable output directory");
         }
         // Creates the missing folders up to `dir`, remembering them (outermost first) to undo.
         void make_folders(const fs::path& dir, std::vector<fs::path>& made) const

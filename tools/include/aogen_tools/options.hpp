@@ -21,6 +21,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <new>
+#include <regex>
 #include <string>
 
 namespace aogen::tools {
@@ -114,8 +116,13 @@ inline CLI::Validator declaration_name()
 // what is valid, so the line adds the option's help text, or the command's options.
 inline std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e, const std::string& program)
 {
-    const std::string what = printable(e.what(), 200);
+    std::string what = printable(e.what(), 200);
     if (what.find("(valid:") != std::string::npos) return what; // one of ours
+    // CLI11 says an option given without its value as "--count: 1 required INT:INT in
+    // 1..256 missing", in its own type names; the user wrote an option and nothing after it.
+    static const std::regex missing_value("^(-[^ :]+): [0-9]+ required .* missing$");
+    std::smatch m;
+    if (std::regex_match(what, m, missing_value)) what = m[1].str() + ": is given without a value";
     const CLI::App* command = &app;
     for (const CLI::App* sub : app.get_subcommands()) command = sub; // the one being parsed
     for (const CLI::Option* o : command->get_options()) {
@@ -136,6 +143,17 @@ inline std::string parse_error_line(const CLI::App& app, const CLI::ParseError& 
     }
     const std::string full = command == &app ? program : program + " " + command->get_name();
     return what + " (valid: the options of " + full + ": " + options + "; " + full + " --help)";
+}
+
+// One line for any exception that ends a program, in aogen's form: an aogen::error as it
+// is; anything else — a C++ library's own exception, which names no input — said to be
+// aogen's fault rather than the user's, with the library's words kept for the report.
+inline std::string exception_line(const std::exception& e)
+{
+    if (dynamic_cast<const aogen::error*>(&e)) return e.what();
+    if (dynamic_cast<const std::bad_alloc*>(&e)) return "memory: ran out (valid: a smaller input, or a machine with more memory)";
+    return "internal error: a library failed (" + printable(e.what(), 160) +
+           ") (valid: any input should give an aogen error instead; please report this with the command line)";
 }
 
 } // namespace aogen::tools

@@ -138,10 +138,11 @@ inline std::vector<variant> variants_from_json(const json_reader& in)
         const json_reader list = in.array("variants");
         require_variant_count(list.path(), list.size());
         for (size_t i = 0; i < list.size(); ++i) {
+            const std::string name = list.at(i).as_string(); // names its own path when it is no string
             try {
-                append_unique(out, variant_from_name(list.at(i).as_string()));
+                append_unique(out, variant_from_name(name));
             } catch (const error& e) {
-                fail(list.at(i).path(), e.what(), "");
+                fail(list.at(i).path(), e.what(), ""); // the name's problem, at its place in the file
             }
         }
     }

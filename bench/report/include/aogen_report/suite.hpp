@@ -33,6 +33,8 @@
 
 #include <aogen/matrix.hpp>
 
+#include <array>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -58,6 +60,8 @@ struct suite_run {
     size_t background_pixels = 0, background_not_one = 0;
     double rmse = 0, twin_rmse = 0, error_limit = 0;
     double depth_max = 0, depth_mean = 0; // compare_depth only
+    double twin_pixel_max = 0;            // faults only: the largest difference from the twin beyond fault_reach
+    double changed_reach = 0;             // faults only: the farthest pixel (from its fault) that differs by more than twin_pixel_max
     bool ran() const { return skipped.empty(); }
 };
 
@@ -81,11 +85,15 @@ struct suite_data {
     }
 };
 
-// The variants the suite runs by default: the default matrix and GTAO's one slice, one step.
+// The variants the suite runs by default: the default matrix, GTAO's one slice, one step,
+// and fp16 twins of each technique's default (16-bit arithmetic, where view depths past
+// 65504 and the other extremes would show first).
 inline std::vector<aogen::variant> suite_variants()
 {
     std::vector<aogen::variant> v = aogen::default_matrix();
-    for (const char* name : {"gtao-1x1-half-noblur-gbufworld-std-persp-cs", "gtao-1x1-full-noblur-gbufworld-std-persp-cs"})
+    for (const char* name : {"gtao-1x1-half-noblur-gbufworld-std-persp-cs", "gtao-1x1-full-noblur-gbufworld-std-persp-cs",
+                             "ssao-s16-half-bilateral-gbufworld-std-persp-cs-fp16", "gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16",
+                             "gtao-2x2-half-denoise-gbufworld-std-persp-cs-fp16", "vbao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16"})
         aogen::append_unique(v, aogen::variant_from_name(name));
     return v;
 }
@@ -141,6 +149,7 @@ struct one_run {
     std::vector<float> full;
     std::vector<uint8_t> must_be_one; // per target pixel
     std::vector<uint8_t> faulted;     // per full-resolution pixel
+    int width = 0;                    // the full resolution's width
 };
 
 inline size_t fault_pixel(const gbuffer_fault& f, int w, int h)
@@ -159,6 +168,7 @@ inline one_run run_once(aogen::vulkan::context& ctx, chain_cache& chains, const 
     const aogen::scenes::scene seen = for_variant(p.scene, v);
     aogen::vulkan::gbuffer g = aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(aogen::scenes::render_gbuffer(seen, *p.tracer, o));
     one_run r;
+    r.width = g.width;
     r.faulted.assign(size_t(g.width) * g.height, 0);
     for (const gbuffer_fault& f : faults) {
         const size_t i = fault_pixel(f, g.width, g.height);
@@ -225,6 +235,29 @@ inline std::string fixed_text(double x, int digits)
     return b;
 }
 
+// The faulted run `a` against its unfaulted twin `b` (the same scene), output pixel by output
+// pixel: the largest difference beyond the case's fault_reach (in full-resolution pixels from
+// the nearest fault), and how far from its fault the farthest clearly changed pixel lies.
+inline void compare_with_twin(suite_run& r, const one_run& a, const one_run& b, const stability_case& c)
+{
+    if (a.out.ao.size() != b.out.ao.size())
+        aogen::fail("stability case " + c.name, "its faults' twin differs in size", "valid: faults with the twin the same scene");
+    const int W = a.width;
+    const int k = a.out.width == W ? 1 : 2;
+    std::vector<std::array<int, 2>> faults;
+    for (size_t i = 0; i < a.faulted.size(); ++i)
+        if (a.faulted[i]) faults.push_back({int(i % W), int(i / W)});
+    for (int y = 0; y < a.out.height; ++y)
+        for (int x = 0; x < a.out.width; ++x) {
+            double nearest = 1e30;
+            for (const auto& f : faults) nearest = std::min(nearest, std::hypot(double(x * k - f[0]), double(y * k - f[1])));
+            const size_t i = size_t(y) * a.out.width + x;
+            const double diff = std::fabs(double(a.out.ao[i]) - b.out.ao[i]);
+            if (diff > c.criterion.twin_pixel_max) r.changed_reach = std::max(r.changed_reach, nearest);
+            if (nearest > c.criterion.fault_reach) r.twin_pixel_max = std::max(r.twin_pixel_max, diff);
+        }
+}
+
 // Judges `r` by the case's criterion; the first failing check decides.
 inline void judge(suite_run& r, const stability_criterion& k, const std::vector<std::string>& pass_names,
                   const std::vector<aogen::vulkan::raw_counts>& per_pass)
@@ -249,6 +282,18 @@ inline void judge(suite_run& r, const stability_criterion& k, const std::vector<
     }
     if (k.compare_depth && (r.depth_max > k.depth_max || r.depth_mean > k.depth_mean)) {
         r.decided_by = "depth conventions differ by up to " + fixed_text(r.depth_max, 4) + " (mean " + fixed_text(r.depth_mean, 5) + ")";
+        return;
+    }
+    if (r.twin_pixel_max > k.twin_pixel_max) {
+        r.decided_by = "a pixel " + fixed_text(r.changed_reach, 1) + " px from its fault differs from the twin by " +
+                       fixed_text(r.twin_pixel_max * 255, 1) + "/255 (beyond " + fixed_text(k.fault_reach, 1) + " px, at most " +
+                       fixed_text(k.twin_pixel_max * 255, 1) + "/255)";
+        return;
+    }
+    if (!k.compare_error) {
+        r.pass = true;
+        r.decided_by = k.compare_depth ? "depth conventions agree within " + fixed_text(r.depth_max, 4) + " (mean " + fixed_text(r.depth_mean, 5) + ")"
+                                       : "no check failed";
         return;
     }
     r.error_limit = k.error_ratio * r.twin_rmse + k.error_slack;
@@ -298,6 +343,7 @@ inline suite_data run_suite(const suite_settings& settings)
                 if (a.must_be_one[i]) r.background_pixels += 1, r.background_not_one += a.out.ao[i] != 1.0f;
             r.rmse = compare(a.full, scene.truth.ao, detail::scored_pixels(scene.truth, a.faulted)).rmse;
             r.twin_rmse = compare(b.full, twin.truth.ao, detail::twin_scored_pixels(c, twin.truth)).rmse;
+            if (!c.faults.empty()) detail::compare_with_twin(r, a, b, c);
             if (c.criterion.compare_depth)
                 for (aogen::depth_convention d : {aogen::depth_convention::standard, aogen::depth_convention::reversed, aogen::depth_convention::reversed_infinite}) {
                     aogen::variant vd = v;

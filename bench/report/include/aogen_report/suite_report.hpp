@@ -49,6 +49,7 @@ inline std::string suite_json(const suite_data& d, const std::string& command)
                 e["background_pixels"] = r.background_pixels, e["background_not_one"] = r.background_not_one;
                 e["depth_max"] = r.depth_max, e["depth_mean"] = r.depth_mean;
             }
+            if (!c.c.faults.empty()) e["twin_pixel_max"] = r.twin_pixel_max, e["changed_reach"] = r.changed_reach;
             runs.push_back(e);
         }
         j["cases"].push_back({{"name", c.c.name},
@@ -56,7 +57,8 @@ inline std::string suite_json(const suite_data& d, const std::string& command)
                               {"source", c.c.source},
                               {"truth_noise_rms", c.truth_noise},
                               {"criterion", {{"error_ratio", k.error_ratio}, {"error_slack", k.error_slack}, {"max_excess", k.max_excess},
-                                             {"compare_depth", k.compare_depth}, {"depth_max", k.depth_max}, {"depth_mean", k.depth_mean}}},
+                                             {"compare_depth", k.compare_depth}, {"depth_max", k.depth_max}, {"depth_mean", k.depth_mean},
+                                             {"compare_error", k.compare_error}, {"fault_reach", k.fault_reach}, {"twin_pixel_max", k.twin_pixel_max}}},
                               {"runs", runs}});
     }
     return j.dump(2) + "\n";
@@ -85,8 +87,14 @@ inline std::string suite_markdown(const suite_data& d, const std::string& comman
         const suite_run* closest = nullptr;
         for (const suite_run& r : d.cases[i].runs)
             if (r.ran() && r.error_limit > 0 && (!closest || r.rmse / r.error_limit > closest->rmse / closest->error_limit)) closest = &r;
-        md << "| " << i + 1 << " | " << d.cases[i].c.name << " | " << d.cases[i].c.about << " | RMSE ≤ " << fixed(k.error_ratio, 2) << " × twin + "
-           << fixed(k.error_slack, 3) << (k.compare_depth ? "; depth Δ ≤ " + fixed(k.depth_max, 4) : "") << " | " << fixed(d.cases[i].truth_noise, 4)
+        const std::string error = k.compare_error ? "RMSE ≤ " + fixed(k.error_ratio, 2) + " × twin + " + fixed(k.error_slack, 3) : "";
+        const std::string depth = k.compare_depth ? "depth Δ ≤ " + fixed(k.depth_max, 4) : "";
+        const std::string pixels = d.cases[i].c.faults.empty() ? "" : "twin Δ ≤ " + fixed(k.twin_pixel_max * 255, 1) + "/255 beyond " +
+                                                                       fixed(k.fault_reach, 0) + " px of a fault";
+        std::string criterion;
+        for (const std::string& part : {error, depth, pixels})
+            if (!part.empty()) criterion += (criterion.empty() ? "" : "; ") + part;
+        md << "| " << i + 1 << " | " << d.cases[i].c.name << " | " << d.cases[i].c.about << " | " << criterion << " | " << fixed(d.cases[i].truth_noise, 4)
            << " | " << (closest ? "`" + closest->variant + "`: " + closest->decided_by : "–") << " |\n";
     }
 
