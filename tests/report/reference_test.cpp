@@ -16,6 +16,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace {
@@ -192,6 +193,78 @@ TEST_CASE("reference: every pixel between a floor and a ceiling h apart is (h/R)
     const double distance = GENERATE(from_range(distances_from_zero));
     INFO("floor and ceiling " << distance << " from the world's zero");
     check_every_pixel(moved(floor_and_ceiling(), distance), everywhere(0.25), 1.0);
+}
+
+TEST_CASE("reference: seen from 6 km with R = 1, too far for a tracer at the eye, every pixel is traced from one among the geometry")
+{
+    // Float geometry places rays of length 1 reliably within truth::reliable_extent(1) ≈ 4.8 km
+    // of a tracer's origin: from the eye, 6 km away, no pixel can be trusted; from the centre
+    // of the hits, every one. The floor, seen from 30° above it through a 0.1° lens, is open:
+    // 1 at every pixel — where a ray placed imprecisely starts below the floor, it reads a
+    // false occlusion.
+    scene s;
+    s.name = "floor from 6 km";
+    s.planes = {{{0, 0, 0}, {0, 0, 1}}};
+    s.camera.target = {0, 0, 0}, s.camera.up = {0, 0, 1};
+    s.camera.eye = {0, -6000 * std::cos(pi / 6), 6000 * std::sin(pi / 6)}; // 5196 along y: past 4.8 km on one axis
+    s.camera.tan_half_fov_y = float(std::tan(0.05 * pi / 180));
+    s.camera.near = 5000, s.camera.far = 7000;
+    s.camera.width = 48, s.camera.height = 27;
+    s.ao_radius = 1;
+    REQUIRE(aogen::truth::reliable_extent(s.ao_radius) < 5196);
+    const auto t = aogen::scenes::make_tracer(s);
+    aogen::scenes::gbuffer_options world;
+    world.use_scene_normals = false;
+    world.normals = aogen::scenes::normal_space::world;
+    const gbuffer g = aogen::scenes::render_gbuffer(s, *t, world);
+    size_t hits = 0;
+    for (uint8_t h : g.hit) hits += h;
+    REQUIRE(hits > 48 * 27 / 2);
+
+    const aogen_report::reference from_eye = aogen_report::trace_reference(*t, g, s.ao_radius, 32, 2);
+    CHECK(from_eye.untrusted == hits); // every hit left out, none refused, none traced
+    for (size_t i = 0; i < g.hit.size(); ++i) CHECK((from_eye.valid[i] == 0 && from_eye.hit[i] == g.hit[i] && std::isnan(from_eye.ao[i])));
+
+    const aogen_report::reference r = aogen_report::trace_reference(s, *t, g, 32, 2);
+    CHECK(r.untrusted == 0);
+    for (size_t i = 0; i < g.hit.size(); ++i) {
+        if (!g.hit[i]) continue;
+        INFO("pixel " << i % 48 << "," << i / 48 << ": " << r.ao[i]);
+        REQUIRE(r.valid[i]);
+        CHECK(std::fabs(r.ao[i] - 1.0) <= 0.005);
+    }
+    CHECK(r.noise_rms < 0.005);
+}
+
+TEST_CASE("reference: a floor to the horizon at a small radius is scored where it can be trusted, the rest left out and counted")
+{
+    scene s = aogen::scenes::builtin_scene("far_floor");
+    s.camera.width = 64, s.camera.height = 36;
+    s.ao_radius = 5e-3; // reliable within about 24 units of a tracer's origin
+    const auto t = aogen::scenes::make_tracer(s);
+    aogen::scenes::gbuffer_options world;
+    world.use_scene_normals = false;
+    world.normals = aogen::scenes::normal_space::world;
+    const gbuffer g = aogen::scenes::render_gbuffer(s, *t, world);
+    const aogen_report::reference r = aogen_report::trace_reference(s, *t, g, 16, 2);
+    size_t hits = 0, valid = 0;
+    for (size_t i = 0; i < g.hit.size(); ++i) {
+        hits += g.hit[i], valid += r.valid[i];
+        if (r.valid[i]) CHECK(r.ao[i] == Approx(1.0).margin(1e-6)); // an open floor
+        else if (g.hit[i]) CHECK(std::isnan(r.ao[i]));
+    }
+    CHECK(valid > 0);
+    CHECK(r.untrusted > 0);
+    CHECK(valid + r.untrusted == hits);
+    aogen::scenes::require_scoreable(s, *t); // not refused: some of it can be trusted
+    s.ao_radius = 1e-6;                       // none can: refused, naming ao_radius and what would do
+    std::string refusal = "<no aogen::error thrown>";
+    try {
+        aogen::scenes::require_scoreable(s, *t);
+    } catch (const aogen::error& e) {
+        refusal = e.what();
+    }
+    CHECK_THAT(refusal, Catch::Contains("ao_radius: 1e-06 is too small for a reliable reference anywhere in view") && Catch::Contains("valid: ao_radius >= "));
 }
 
 TEST_CASE("reference: the same image for any number of threads")

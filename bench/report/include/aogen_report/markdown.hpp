@@ -134,12 +134,15 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     md << "\n## Scenes\n\n";
     md << "The reference's own noise (RMS of the per-pixel Monte-Carlo standard error) adds to a variant's RMSE in quadrature; "
           "it must stay well below the errors above.\n\n";
+    md << "Valid pixels are those scored; a hit farther from the camera than float geometry can place rays of the AO radius "
+          "(truth::reliable_extent) has no reference to trust, and is left out (the count in brackets).\n\n";
     md << "| scene | size | AO radius | valid pixels | mean reference AO | reference noise | SM clock while timed | strip |\n";
     md << "|---|---|---:|---:|---:|---:|---|---|\n";
     for (const scene_record& s : d.scenes) {
         const auto strip = strips.find(s.scene.name);
         md << "| " << s.scene.name << (s.scene.renderer.point_cloud ? " (point cloud)" : "") << " | " << s.scene.camera.width << "×"
-           << s.scene.camera.height << " | " << fixed(s.scene.ao_radius, 3) << " | " << s.valid_pixels << " | " << fixed(s.truth_mean, 4)
+           << s.scene.camera.height << " | " << fixed(s.scene.ao_radius, 3) << " | " << s.valid_pixels
+           << (s.truth.untrusted ? " (" + std::to_string(s.truth.untrusted) + " left out)" : "") << " | " << fixed(s.truth_mean, 4)
            << " | " << fixed(s.truth.noise_rms, 4) << " | " << (s.clocks.samples ? fixed(s.clocks.median, 0) + " MHz" : "–") << " | "
            << (strip == strips.end() ? "" : "[png](" + strip->second.path + ")") << " |\n";
     }

@@ -11,12 +11,17 @@
 // (aogen::truth::scene::ao). Pixel i's rays use seed i, and pixels are split over threads
 // by index, so the image is the same for any thread count. noise_rms is the root mean
 // square of the per-pixel standard errors: how much the truth's own noise adds to a
-// variant's RMSE (in quadrature), to be read against the errors the report shows.
+// variant's RMSE (in quadrature), to be read against the errors the report shows. A hit
+// too far from the camera for a reference at `radius` (truth::reliable_extent) is not
+// traced: `valid` leaves it out of every score and `untrusted` counts it; `hit` still says
+// a surface is there.
 #pragma once
 
 #include <aogen_scenes/gbuffer.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -24,12 +29,25 @@ namespace aogen_report {
 
 struct reference {
     int width = 0, height = 0;
-    std::vector<float> ao;             // NaN on background
-    std::vector<float> standard_error; // 0 on background
-    std::vector<uint8_t> valid;        // 1 where a surface was hit
+    std::vector<float> ao;             // NaN on background and where it cannot be trusted
+    std::vector<float> standard_error; // 0 there
+    std::vector<uint8_t> valid;        // 1 where a surface was hit and its reference can be trusted: the pixels scored
+    std::vector<uint8_t> hit;          // 1 where a surface was hit (0: background, which a shader must leave at 1)
+    size_t untrusted = 0;              // hits left out: farther from the camera than truth::reliable_extent(radius)
     double noise_rms = 0;              // √(mean standard_error²) over valid pixels
     int rays_per_pixel = 0;
 };
+
+namespace detail {
+// noise_rms over the valid pixels.
+inline void finish(reference& r)
+{
+    double squares = 0, pixels = 0;
+    for (size_t i = 0; i < r.valid.size(); ++i)
+        if (r.valid[i]) squares += double(r.standard_error[i]) * r.standard_error[i], pixels += 1;
+    r.noise_rms = pixels > 0 ? std::sqrt(squares / pixels) : 0;
+}
+} // namespace detail
 
 inline reference trace_reference(const aogen::truth::scene& t, const aogen::scenes::gbuffer& g, double radius, int grid,
                                  unsigned threads = std::thread::hardware_concurrency())
@@ -41,11 +59,22 @@ inline reference trace_reference(const aogen::truth::scene& t, const aogen::scen
     r.width = g.width, r.height = g.height;
     r.ao.assign(n, std::nanf(""));
     r.standard_error.assign(n, 0.0f);
+    r.hit = g.hit;
     r.valid = g.hit;
     r.rays_per_pixel = grid * grid;
+    // A hit farther from the tracer's origin (the eye) than the extent at which float
+    // geometry can place rays of length `radius` has no reference to trust: left out.
+    const double reliable = aogen::truth::reliable_extent(radius);
+    const aogen::truth::vec3 origin = t.origin();
+    for (size_t i = 0; i < n; ++i) {
+        if (!g.hit[i]) continue;
+        const double extent = std::max({std::abs(g.position[3 * i] - origin.x), std::abs(g.position[3 * i + 1] - origin.y),
+                                        std::abs(g.position[3 * i + 2] - origin.z)});
+        if (extent > reliable) r.valid[i] = 0, ++r.untrusted;
+    }
     const auto trace = [&](size_t first, size_t stride) {
         for (size_t i = first; i < n; i += stride) {
-            if (!g.hit[i]) continue;
+            if (!r.valid[i]) continue;
             aogen::truth::options o;
             o.radius = radius;
             o.grid = grid;
@@ -63,10 +92,35 @@ inline reference trace_reference(const aogen::truth::scene& t, const aogen::scen
     trace(0, count);
     for (std::thread& w : workers) w.join();
 
-    double squares = 0, pixels = 0;
-    for (size_t i = 0; i < n; ++i)
-        if (r.valid[i]) squares += double(r.standard_error[i]) * r.standard_error[i], pixels += 1;
-    r.noise_rms = pixels > 0 ? std::sqrt(squares / pixels) : 0;
+    detail::finish(r);
+    return r;
+}
+
+// The reference of scene `s` (G-buffer `g`, world normals), traced from `eye_tracer` (origin
+// at the eye: scenes::make_tracer) where that can be trusted, and the hits too far from
+// the eye for it from a second tracer whose origin is the centre of their bounding box —
+// a telephoto view of geometry kilometres away is scored whole. What neither can trust
+// stays left out (`untrusted`).
+inline reference trace_reference(const aogen::scenes::scene& s, const aogen::truth::scene& eye_tracer, const aogen::scenes::gbuffer& g, int grid,
+                                 unsigned threads = std::thread::hardware_concurrency())
+{
+    reference r = trace_reference(eye_tracer, g, s.ao_radius, grid, threads);
+    if (r.untrusted == 0) return r;
+    aogen::scenes::gbuffer rest = g; // only the hits left out
+    aogen::truth::vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (size_t i = 0; i < rest.hit.size(); ++i) {
+        rest.hit[i] = rest.hit[i] && !r.valid[i];
+        if (!rest.hit[i]) continue;
+        const double* p = &g.position[3 * i];
+        lo = {std::min(lo.x, p[0]), std::min(lo.y, p[1]), std::min(lo.z, p[2])};
+        hi = {std::max(hi.x, p[0]), std::max(hi.y, p[1]), std::max(hi.z, p[2])};
+    }
+    const std::unique_ptr<aogen::truth::scene> centred =
+        aogen::scenes::make_tracer_at(s, {0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 0.5 * (lo.z + hi.z)});
+    const reference second = trace_reference(*centred, rest, s.ao_radius, grid, threads);
+    for (size_t i = 0; i < r.valid.size(); ++i)
+        if (second.valid[i]) r.ao[i] = second.ao[i], r.standard_error[i] = second.standard_error[i], r.valid[i] = 1, --r.untrusted;
+    detail::finish(r);
     return r;
 }
 

@@ -9,7 +9,7 @@
 //     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
 //     "phases_s": {compile, trace, score, time, runs},
 //     "calibration": "...",
-//     "scenes":   [{name, width, height, ao_radius, valid_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
+//     "scenes":   [{name, width, height, ao_radius, valid_pixels, untrusted_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
 //                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
 //                   iterations, settled}],           // per round, as the budget allowed; warm-up settled
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
@@ -128,6 +128,7 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                {"height", s.scene.camera.height},
                                {"ao_radius", s.scene.ao_radius},
                                {"valid_pixels", s.valid_pixels},
+                               {"untrusted_pixels", s.truth.untrusted},
                                {"truth_mean", s.truth_mean},
                                {"truth_noise_rms", s.truth.noise_rms},
                                {"point_cloud", s.scene.renderer.point_cloud},

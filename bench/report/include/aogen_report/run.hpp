@@ -484,7 +484,7 @@ inline scene_record prepare_scene(aogen::scenes::scene s, const aogen::truth::sc
     world.use_scene_normals = false;
     world.normals = aogen::scenes::normal_space::world;
     const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(s, tracer, world);
-    r.truth = trace_reference(tracer, g, s.ao_radius, settings.grid);
+    r.truth = trace_reference(s, tracer, g, settings.grid);
     double sum = 0;
     for (size_t i = 0; i < r.truth.ao.size(); ++i)
         if (r.truth.valid[i]) sum += r.truth.ao[i], ++r.valid_pixels;
@@ -554,6 +554,10 @@ inline report_data run_report(const report_settings& settings)
         const auto trace_start = clock::now();
         const std::unique_ptr<aogen::truth::scene> tracer = aogen::scenes::make_tracer(settings.scenes[si]); // camera-relative
         out.scenes.push_back(prepare_scene(settings.scenes[si], *tracer, settings));
+        if (const size_t left_out = out.scenes.back().truth.untrusted)
+            settings.progress(tag + ": " + std::to_string(left_out) + " pixels left out of the score: their geometry lies too far from the camera, and spans too much, " +
+                              "for a reference at ao_radius " + aogen::format_number(settings.scenes[si].ao_radius) + " (rays that short are placed reliably within " +
+                              aogen::format_number(aogen::truth::reliable_extent(settings.scenes[si].ao_radius)) + " of a tracer's origin)");
         const scene_record& scene = out.scenes.back();
         detail::gbuffer_cache gbuffers(ctx, scene.scene, *tracer);
         out.phases.trace += detail::seconds_since(trace_start);

@@ -138,7 +138,7 @@ inline prepared_scene prepare(const aogen::scenes::scene& s, int grid)
     prepared_scene p{s, aogen::scenes::make_tracer(s), {}};
     aogen::scenes::gbuffer_options world;
     world.use_scene_normals = false;
-    p.truth = trace_reference(*p.tracer, aogen::scenes::render_gbuffer(s, *p.tracer, world), s.ao_radius, grid);
+    p.truth = trace_reference(s, *p.tracer, aogen::scenes::render_gbuffer(s, *p.tracer, world), grid);
     return p;
 }
 
@@ -201,7 +201,7 @@ inline one_run run_once(aogen::vulkan::context& ctx, chain_cache& chains, const 
             const bool faulted_normal = r.faulted[full] && v.normals != aogen::normal_source::reconstructed && std::isfinite(g.depth[full]);
             // A zero normal gives AO 1 in the AO pass; a blur may still mix it with its neighbours.
             const bool ao_pass_only = passes(v).size() == 1;
-            r.must_be_one[size_t(y) * ow + x] = !p.truth.valid[full] || faulted_depth || (faulted_normal && ao_pass_only);
+            r.must_be_one[size_t(y) * ow + x] = !p.truth.hit[full] || faulted_depth || (faulted_normal && ao_pass_only);
         }
     return r;
 }

@@ -169,42 +169,68 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
     return g;
 }
 
-// What `s`'s camera sees of tracer `t`: how many pixels hit geometry, and the largest
-// |coordinate| of a hit relative to the tracer's origin (what the reference's precision
-// depends on, truth::reliable_extent). A scene that shows nothing has no error to score,
-// and one too large for its radius no reference to trust: the report refuses both before
-// it traces anything.
+// What `s`'s camera sees of tracer `t`: how many pixels hit geometry, the nearest and the
+// largest |coordinate| of a hit relative to the tracer's origin (what the reference's
+// precision depends on, truth::reliable_extent), and how many hits lie within the extent
+// whose reference can be trusted at the scene's AO radius. A scene that shows nothing has
+// no error to score, and one whose every hit lies too far for its radius no reference to
+// trust: the report refuses both before it traces anything. Hits beyond the reliable
+// extent are left out of the score (aogen_report/reference.hpp), and counted.
 struct visibility {
     size_t pixels = 0;
+    size_t trusted_pixels = 0;
     double extent = 0;
+    double nearest = 0;
 };
+
+// The largest |coordinate| of p - origin.
+inline double extent_from(dvec3 p, dvec3 origin)
+{
+    const dvec3 q = p - origin;
+    return std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+}
 
 inline visibility visible_geometry(const scene& s, const truth::scene& t)
 {
     const primary_rays rays(s.camera);
+    const double reliable = truth::reliable_extent(s.ao_radius);
     visibility v;
+    v.nearest = std::numeric_limits<double>::infinity();
+    std::vector<dvec3> far; // hits too far from the eye: aogen_report/reference.hpp traces them from their bounding box's centre
     for (int y = 0; y < s.camera.height; ++y)
         for (int x = 0; x < s.camera.width; ++x) {
             const primary_ray r = rays.at(x, y);
             const truth::scene::hit h = t.intersect(r.org, r.dir, rays.tnear(), rays.tfar());
             if (!h.found) continue;
             ++v.pixels;
-            const dvec3 q = h.position - t.origin();
-            v.extent = std::max({v.extent, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+            const double extent = extent_from(h.position, t.origin());
+            v.extent = std::max(v.extent, extent);
+            v.nearest = std::min(v.nearest, extent);
+            if (extent <= reliable) ++v.trusted_pixels;
+            else far.push_back(h.position);
         }
+    if (far.empty()) return v;
+    dvec3 lo = far.front(), hi = far.front();
+    for (const dvec3& p : far) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    const dvec3 centre = 0.5 * (lo + hi);
+    for (const dvec3& p : far) v.trusted_pixels += extent_from(p, centre) <= reliable;
     return v;
 }
 
-// aogen::error naming `s.source` unless its camera sees some of its geometry, all of it near
-// enough for the reference to be traced reliably at the scene's AO radius.
+// aogen::error naming `s.source` unless its camera sees some of its geometry, some of it
+// near enough for the reference to be traced reliably at the scene's AO radius (the rest
+// is left out of the score, not refused).
 inline void require_scoreable(const scene& s, const truth::scene& t)
 {
     const visibility v = visible_geometry(s, t);
     if (v.pixels == 0) fail(s.source, "shows no geometry: no pixel's ray hits anything between near and far", "valid: geometry in front of the camera");
-    if (v.extent > truth::reliable_extent(s.ao_radius))
-        fail(s.source + ": ao_radius", format_number(s.ao_radius) + " is too small for a reliable reference " + format_number(v.extent) +
-                                           " from the camera (float geometry cannot place rays that short that far out)",
-             "valid: ao_radius >= " + format_number(v.extent / truth::reliable_extent(1.0)) + " for this view");
+    if (v.trusted_pixels == 0)
+        fail(s.source + ": ao_radius", format_number(s.ao_radius) + " is too small for a reliable reference anywhere in view (the nearest geometry is " +
+                                           format_number(v.nearest) + " from the camera)",
+             "valid: ao_radius >= " + format_number(v.nearest / truth::reliable_extent(1.0)));
 }
 
 // Builds the scene's tracer and ray-casts the G-buffer.

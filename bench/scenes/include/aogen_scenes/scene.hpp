@@ -185,11 +185,19 @@ struct scene {
 // The tracer for `s`, built and committed, with its origin at the camera's eye: the points
 // the G-buffer finds and the reference traces from are within the camera's distances of it.
 // A unique_ptr because a tracer owns Embree handles and cannot move.
-inline std::unique_ptr<truth::scene> make_tracer(const scene& s)
+// A tracer with its origin at `origin`: for rays that start far from the eye (a telephoto
+// view's geometry kilometres away), an origin among them keeps their float coordinates
+// small (aogen_report/reference.hpp).
+inline std::unique_ptr<truth::scene> make_tracer_at(const scene& s, dvec3 origin)
 {
-    auto tracer = std::make_unique<truth::scene>(s.camera.eye);
+    auto tracer = std::make_unique<truth::scene>(origin);
     s.build(*tracer);
     return tracer;
+}
+
+inline std::unique_ptr<truth::scene> make_tracer(const scene& s)
+{
+    return make_tracer_at(s, s.camera.eye);
 }
 
 // --- validation --------------------------------------------------------------------
