@@ -124,8 +124,8 @@
 #include "error.hpp"
 #include "names.hpp"
 #include "reflect.hpp"
+#include "targets.hpp"
 #include "wgsl.hpp"
-#include "variant.hpp"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -146,22 +146,6 @@
 #include <vector>
 
 namespace aogen::compile {
-
-// ---------------------------------------------------------------------------------
-// Stages
-// ---------------------------------------------------------------------------------
-
-// shader_stage and the targets are declared in reflect.hpp.
-
-// The stage of a variant's AO pass (its fragment passes also need a vertex shader).
-inline shader_stage stage_of(pipeline_stage s)
-{
-    switch (s) {
-    case pipeline_stage::compute: return shader_stage::compute;
-    case pipeline_stage::fragment: return shader_stage::fragment;
-    }
-    names::fail_unlisted(pipeline_stage_names, s, "stage");
-}
 
 // ---------------------------------------------------------------------------------
 // Results and options

@@ -20,11 +20,11 @@
 //     p.ssao.radius = 0.8f;                                  // tune a field
 //     p.blur.mode = aogen::blur_mode_from_name("box");       // names <-> enum values
 //     aogen::validate(p);  // throws aogen::error, e.g.
-//                          // "ssao.radius: nan is not a finite number (valid: > 0 and <= 1e+06)"
+//                          // "ssao.radius: nan is not a finite number (valid: > 0 and <= 1e+15)"
 //
 //     aogen::to_name(p.blur.mode);                  // "box"
-//     aogen::ssao_params::radius_range;             // {0, 1e6, lower bound excluded}
-//     aogen::to_string(aogen::ssao_params::radius_range);  // "> 0 and <= 1e+06"
+//     aogen::ssao_params::radius_range;             // {0, 1e15, lower bound excluded}
+//     aogen::to_string(aogen::ssao_params::radius_range);  // "> 0 and <= 1e+15"
 //
 // Nothing here touches a GPU: these are the numbers that kernel.hpp, noise.hpp,
 // layout.hpp and the shader templates consume. Fields are float because that is what
@@ -71,7 +71,14 @@ struct float_range {
     }
 };
 
-// The words error messages and help text use for a range: "1..256", "> 0 and <= 1e+06".
+// The largest world length a setting may hold (a radius, a bias). Not a limit of taste but
+// of float arithmetic: every radius is capped at the screen's extent at the pixel's depth
+// before it is used (ssao.glsl's ao_ssao_radius, common/slices.glsl's ao_slice_radius), so
+// what must stay finite is the one length that is not capped, VBAO's thickness (up to 100 ×
+// its radius, params below), and its square: (100 · 1e15)² = 1e34 < FLT_MAX ≈ 3.4e38.
+inline constexpr float max_world_length = 1e15f;
+
+// The words error messages and help text use for a range: "1..256", "> 0 and <= 1e+15".
 inline std::string to_string(const int_range& r)
 {
     return format_number(r.lo) + ".." + format_number(r.hi);
@@ -266,12 +273,12 @@ struct ssao_params {
 
     // Hemisphere radius in view-space units; also the range check's scale.
     // 0.5 is Unique Engine's default (and ours for Taos SSAO and ssao.wgsl).
-    static constexpr float_range radius_range{0.0f, 1e6f, true};
+    static constexpr float_range radius_range{0.0f, max_world_length, true};
     float radius = 0.5f;
 
     // Depth-comparison bias in view-space units: occluded when
     // scene_z > sample_z + bias (toward the camera). Avoids self-occlusion ("acne").
-    static constexpr float_range bias_range{0.0f, 1e6f, false};
+    static constexpr float_range bias_range{0.0f, max_world_length, false};
     float bias = 0.025f;
 
     // Which formula makes the output (see ssao_output). Default: Taos' strength form.
@@ -364,7 +371,7 @@ struct gtao_params {
     // radius R (a ray-traced reference's, or what an artist means by "AO radius"), search
     // radius_per_ao_radius · R: GTAO's cosine-weighted horizons reach farther than their
     // radius suggests (tuned; XeGTAO scales its radius by a multiplier for the same reason).
-    static constexpr float_range radius_range{0.0f, 1e6f, true};
+    static constexpr float_range radius_range{0.0f, max_world_length, true};
     static constexpr float radius_per_ao_radius = 0.78125f;
     float radius = 1.0f;
 
@@ -439,7 +446,7 @@ struct gtao_params {
 struct vbao_params {
     // World-space sampling radius, as gtao_params::radius: to match AO of radius R, search
     // radius_per_ao_radius · R.
-    static constexpr float_range radius_range{0.0f, 1e6f, true};
+    static constexpr float_range radius_range{0.0f, max_world_length, true};
     static constexpr float radius_per_ao_radius = 1.15625f; // tuned
     float radius = 1.0f;
 

@@ -19,8 +19,8 @@
 //   unoptimized figures 0. compile() (compile.hpp) reflects the SPIR-V it produced and
 //   fills those in: every compiled target's entry point, glslang's module size, and the
 //   MSL argument indices SPIRV-Cross assigned (`descriptor_binding::msl_buffer` etc.,
-//   `buffer_block::msl_buffer`). The namespace is compile.hpp's, aogen::compile, and so is
-//   the target enum's meaning; it is declared here because entry_points is keyed by it.
+//   `buffer_block::msl_buffer`). The namespace is compile.hpp's, aogen::compile; the stage and
+//   target enums (entry_points is keyed by target) are stages.hpp's and targets.hpp's.
 //
 // USAGE
 //     #include <aogen/reflect.hpp>      // CMake: target_link_libraries(... aogen::compiler)
@@ -59,7 +59,7 @@
 #include "error.hpp"
 #include "layout.hpp"
 #include "names.hpp"
-#include "variant.hpp"
+#include "targets.hpp"
 
 #include <spirv_cross/spirv_cross.hpp>
 
@@ -79,47 +79,7 @@ namespace aogen::compile {
 // Stages and targets
 // ---------------------------------------------------------------------------------
 
-// target is declared here, not in compile.hpp, because reflection::entry_points is keyed
-// by it; compile.hpp says what each target is.
-
-using aogen::shader_stage; // defined in variant.hpp, shared with codegen.hpp
-using aogen::shader_stage_from_name;
-
-enum class target { spv, glsl, essl, hlsl50, hlsl60, msl_macos, msl_ios, wgsl };
-inline constexpr std::array<enum_name<target>, 8> target_names{{
-    {target::spv, "spv"},
-    {target::glsl, "glsl"},
-    {target::essl, "essl"},
-    {target::hlsl50, "hlsl"},
-    {target::hlsl60, "hlsl60"},
-    {target::msl_macos, "msl"},
-    {target::msl_ios, "msl_ios"},
-    {target::wgsl, "wgsl"},
-}};
-static_assert(names::distinct(target_names));
-
-// Every target, in table order.
-inline const std::vector<target> all_targets = [] {
-    constexpr auto values = names::values(target_names);
-    return std::vector<target>(values.begin(), values.end());
-}();
-
-// The targets compile() makes from any Vulkan GLSL, through SPIRV-Cross: all but wgsl, which
-// needs SPIR-V in WebGPU's binding model and Node.js (compile.hpp).
-inline const std::vector<target> spirv_cross_targets = [] {
-    std::vector<target> out;
-    for (target t : all_targets)
-        if (t != target::wgsl) out.push_back(t);
-    return out;
-}();
-
-inline const char* to_name(target t) { return names::name_of(target_names, t, "target"); }
-inline target target_from_name(std::string_view name, std::string_view subject = "target")
-{
-    return names::value_of(target_names, name, subject);
-}
-// "spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl".
-inline std::string target_list() { return names::list(target_names); }
+// shader_stage and target are stages.hpp's.
 
 // ---------------------------------------------------------------------------------
 // Reflection

@@ -35,6 +35,7 @@
 #include "math.hpp"
 #include "names.hpp"
 #include "params.hpp"
+#include "stages.hpp"
 
 #include <algorithm>
 #include <array>
@@ -62,37 +63,22 @@ inline constexpr std::array<enum_name<pipeline_stage>, 2> pipeline_stage_names{{
     {pipeline_stage::fragment, "fragment"},
 }};
 
+// The shader stage of a variant's AO pass (its fragment passes also need a vertex shader).
+inline shader_stage stage_of(pipeline_stage s)
+{
+    switch (s) {
+    case pipeline_stage::compute: return shader_stage::compute;
+    case pipeline_stage::fragment: return shader_stage::fragment;
+    }
+    names::fail_unlisted(pipeline_stage_names, s, "stage");
+}
+
 enum class projection_kind { perspective, orthographic };
 inline constexpr std::array<enum_name<projection_kind>, 2> projection_kind_names{{
     {projection_kind::perspective, "perspective"},
     {projection_kind::orthographic, "orthographic"},
 }};
 
-// The shader stages a variant's passes compile to (a fragment pass also needs the
-// fullscreen vertex shader).
-enum class shader_stage { compute, vertex, fragment };
-inline constexpr std::array<enum_name<shader_stage>, 3> shader_stage_names{{
-    {shader_stage::compute, "compute"},
-    {shader_stage::vertex, "vertex"},
-    {shader_stage::fragment, "fragment"},
-}};
-
-inline const char* to_name(shader_stage s) { return names::name_of(shader_stage_names, s, "shader stage"); }
-inline shader_stage shader_stage_from_name(std::string_view name, std::string_view subject = "shader stage")
-{
-    return names::value_of(shader_stage_names, name, subject);
-}
-
-// The usual file extension of a stage's GLSL (glslangValidator's): comp, vert, frag.
-inline const char* file_extension(shader_stage s)
-{
-    switch (s) {
-    case shader_stage::compute: return "comp";
-    case shader_stage::vertex: return "vert";
-    case shader_stage::fragment: return "frag";
-    }
-    names::fail_unlisted(shader_stage_names, s, "shader stage");
-}
 
 inline constexpr std::array<enum_name<depth_convention>, 3> depth_convention_names{{
     {depth_convention::standard, "standard"},

@@ -32,7 +32,7 @@
 #pragma once
 
 #include "error.hpp"
-#include "variant.hpp" // shader_stage
+#include "stages.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -326,8 +326,6 @@ TEST_CASE("compile: target and stage names", "[compile]")
     CHECK(error_of([] { cc::target_from_name("dxil", "--target"); }) ==
           "--target: 'dxil' is not a known name (valid: spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl)");
     CHECK(cc::shader_stage_from_name("fragment") == cc::shader_stage::fragment);
-    CHECK(cc::stage_of(aogen::pipeline_stage::compute) == cc::shader_stage::compute);
-    CHECK(cc::stage_of(aogen::pipeline_stage::fragment) == cc::shader_stage::fragment);
 }
 
 TEST_CASE("compile: compute shader to every target but essl (r8 output), re-validated", "[compile]")

@@ -271,3 +271,9 @@ TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO and VBAO only,
     variant ssao;
     CHECK_THAT(error_of([&] { apply_quality(ssao, quality_preset_from_name("high")); }), Contains("sets slices and steps, and the variant is ssao (valid: technique gtao or vbao)"));
 }
+
+TEST_CASE("variant: a pipeline stage's AO pass compiles as that shader stage", "[variant]")
+{
+    CHECK(aogen::stage_of(aogen::pipeline_stage::compute) == aogen::shader_stage::compute);
+    CHECK(aogen::stage_of(aogen::pipeline_stage::fragment) == aogen::shader_stage::fragment);
+}

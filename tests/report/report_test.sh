@@ -140,7 +140,7 @@ suite)
 import json, sys
 r = json.load(open(sys.argv[1]))
 cases = {c["name"]: c for c in r["cases"]}
-assert len(cases) == 30 and r["failures"] == 0, (len(cases), r["failures"])
+assert len(cases) == 31 and r["failures"] == 0, (len(cases), r["failures"])
 for c in cases.values():
     assert len(c["runs"]) >= 70, (c["name"], len(c["runs"]))
     for run in c["runs"]:
@@ -165,8 +165,12 @@ for case in ("radius_past_screen", "radius_huge"):  # no worse than the largest 
         assert x["rmse"] <= 1.25 * x["twin_rmse"] + 0.03, (case, x["variant"], x["rmse"], x["twin_rmse"])
 assert len(runs("sub_millimetre", "")) >= 70  # an AO radius of 1e-6 runs (it was refused)
 assert all(x["depth_max"] <= 3 / 255 for x in cases["depth_conventions"]["runs"])
+scale = [x for x in cases["scale_invariance"]["runs"] if "skipped" not in x]  # 1e-6 ... 1e6 of the box
+assert len(scale) >= 100 and all(x["scale_max"] <= 1 / 255 for x in scale), max(x["scale_max"] for x in scale)
+import re  # the largest radius the settings take: 1e15 / 1.15625 (params.hpp's max_world_length, VBAO's radius factor)
+assert float(re.search(r"\(([0-9.e+]+)\)", cases["radius_huge"]["about"]).group(1)) > 8e14, cases["radius_huge"]["about"]
 PY
-  grep -q "| 30 | sub_millimetre |" "$work/s/report.md" || fail "report.md lacks the case table"
+  grep -q "| 31 | scale_invariance |" "$work/s/report.md" || fail "report.md lacks the case table"
   grep -q "^None\.$" "$work/s/report.md" || fail "report.md lists failures"
   # A planted failure: a criterion no variant can meet (RMSE <= 0) fails --check, named.
   cat >"$work/impossible.json" <<'JSON'

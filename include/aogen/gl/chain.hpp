@@ -36,8 +36,8 @@
 //   a diagnostics build (its raw image is not run here).
 #pragma once
 
-#include "../chain_inputs.hpp"
-#include "../codegen.hpp"
+#include <aogen/chain_inputs.hpp>
+#include <aogen/codegen.hpp>
 #include "context.hpp"
 
 #include <memory>

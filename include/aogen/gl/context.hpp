@@ -24,7 +24,7 @@
 #include <EGL/eglext.h>
 #include <GL/glcorearb.h>
 
-#include "../error.hpp"
+#include <aogen/error.hpp>
 
 #include <string>
 

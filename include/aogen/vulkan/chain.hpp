@@ -46,9 +46,9 @@
 //   Vulkan call.
 #pragma once
 
-#include "../kernel.hpp"
-#include "../noise.hpp"
-#include "../uniforms.hpp"
+#include <aogen/kernel.hpp>
+#include <aogen/noise.hpp>
+#include <aogen/uniforms.hpp>
 #include "bound_chain.hpp"
 #include "device.hpp"
 #include "inputs.hpp"

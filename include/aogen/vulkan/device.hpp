@@ -33,7 +33,7 @@
 //   any_device() says whether a context could be made, without throwing.
 #pragma once
 
-#include "../error.hpp"
+#include <aogen/error.hpp>
 
 #include <vulkan/vulkan.h>
 

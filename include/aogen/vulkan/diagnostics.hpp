@@ -26,6 +26,8 @@
 //   aogen::error: a failing compile or Vulkan call.
 #pragma once
 
+#include <aogen/codegen.hpp>
+
 #include "resources.hpp"
 #include "spirv_cache.hpp"
 

@@ -11,8 +11,8 @@
 // the HLSL's meaning as glslang reads it, not DXC's or FXC's code generation.
 #pragma once
 
-#include "../compile.hpp"
-#include "../emitted.hpp"
+#include <aogen/compile.hpp>
+#include <aogen/emitted.hpp>
 #include "passes.hpp"
 
 #include <memory>

@@ -25,8 +25,8 @@
 //   D32_SFLOAT (naming the pixel), a failing Vulkan call.
 #pragma once
 
-#include "../chain_inputs.hpp"
-#include "../names.hpp"
+#include <aogen/chain_inputs.hpp>
+#include <aogen/names.hpp>
 #include "resources.hpp"
 
 #include <array>

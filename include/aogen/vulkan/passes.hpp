@@ -33,7 +33,7 @@
 //   shaders cannot store to images, a failing Vulkan call.
 #pragma once
 
-#include "../codegen.hpp"
+#include <aogen/codegen.hpp>
 #include "resources.hpp"
 #include "spirv_cache.hpp"
 

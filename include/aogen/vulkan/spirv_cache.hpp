@@ -9,6 +9,9 @@
 //   builds any pipeline. Lookups and inserts are guarded by a mutex; a cache may be shared
 //   by pass_pipelines on several threads.
 //
+//   A source is any value with the fields stage, name and glsl (codegen::shader_source is
+//   one): the cache needs the compiler, not the code generator.
+//
 // USAGE
 //     aogen::vulkan::spirv_cache cache;
 //     cache.compile_all(sources);                          // every distinct text, on all cores
@@ -19,12 +22,9 @@
 //   every thread has finished).
 #pragma once
 
-#include "../codegen.hpp"
-#include "../compile.hpp"
+#include <aogen/compile.hpp>
+#include <aogen/parallel.hpp>
 
-#include <algorithm>
-#include <atomic>
-#include <exception>
 #include <map>
 #include <mutex>
 #include <string>
@@ -37,48 +37,38 @@ namespace aogen::vulkan {
 class spirv_cache {
 public:
     // The SPIR-V of `s`, compiled now if no source of the same text and stage was.
-    const std::vector<uint32_t>& get(const codegen::shader_source& s)
+    template <class Source>
+    const std::vector<uint32_t>& get(const Source& s)
     {
-        const key k{s.stage, s.glsl};
+        return get(s.stage, s.glsl, s.name);
+    }
+    const std::vector<uint32_t>& get(shader_stage stage, const std::string& glsl, const std::string& name)
+    {
+        const key k{stage, glsl};
         {
             std::lock_guard<std::mutex> lock(mutex_);
             auto it = words_.find(k);
             if (it != words_.end()) return it->second;
         }
-        std::vector<uint32_t> words = compile::compile(s.glsl, s.stage, s.name, {compile::target::spv}).spirv;
+        std::vector<uint32_t> words = compile::compile(glsl, stage, name, {compile::target::spv}).spirv;
         std::lock_guard<std::mutex> lock(mutex_);
         return words_.emplace(k, std::move(words)).first->second; // a concurrent twin's insert wins; both are equal
     }
 
     // Makes `words` the SPIR-V of `s`: for sources whose text is not GLSL (the HLSL round trip
     // compiles HLSL with compile::hlsl_to_spirv and runs it under the variant's own passes).
-    void put(const codegen::shader_source& s, std::vector<uint32_t> words)
+    template <class Source>
+    void put(const Source& s, std::vector<uint32_t> words)
     {
         std::lock_guard<std::mutex> lock(mutex_);
         words_[key{s.stage, s.glsl}] = std::move(words);
     }
 
     // Compiles every source not yet in the cache, on up to `threads` threads.
-    void compile_all(const std::vector<codegen::shader_source>& sources, unsigned threads = std::thread::hardware_concurrency())
+    template <class Source>
+    void compile_all(const std::vector<Source>& sources, unsigned threads = std::thread::hardware_concurrency())
     {
-        std::atomic<size_t> next{0};
-        std::exception_ptr failure;
-        std::mutex failure_mutex;
-        const auto work = [&] {
-            for (size_t i = next++; i < sources.size(); i = next++) {
-                try {
-                    get(sources[i]);
-                } catch (...) {
-                    std::lock_guard<std::mutex> lock(failure_mutex);
-                    if (!failure) failure = std::current_exception();
-                }
-            }
-        };
-        std::vector<std::thread> pool;
-        for (unsigned t = 1; t < std::max(1u, threads); ++t) pool.emplace_back(work);
-        work();
-        for (std::thread& t : pool) t.join();
-        if (failure) std::rethrow_exception(failure);
+        parallel_for(sources.size(), [&](size_t i) { get(sources[i]); }, threads);
     }
 
     size_t size() const

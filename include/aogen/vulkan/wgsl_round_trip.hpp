@@ -16,7 +16,7 @@
 // (Dawn on this machine has no device that executes: see README § WebGPU).
 #pragma once
 
-#include "../emitted.hpp"
+#include <aogen/emitted.hpp>
 #include "passes.hpp"
 
 #include <map>

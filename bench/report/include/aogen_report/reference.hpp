@@ -8,8 +8,8 @@
 //
 // AO(p) = (1/π)∫ V_R(p, ω) cos θ dω over the hemisphere of the pixel's world-space
 // normal (g must hold world normals), with grid × grid stratified cosine-distributed rays
-// (aogen::truth::scene::ao). Pixel i's rays use seed i, and pixels are split over threads
-// by index, so the image is the same for any thread count. noise_rms is the root mean
+// (aogen::truth::scene::ao). Pixel i's rays use seed i, whichever thread traces it,
+// so the image is the same for any thread count. noise_rms is the root mean
 // square of the per-pixel standard errors: how much the truth's own noise adds to a
 // variant's RMSE (in quadrature), to be read against the errors the report shows. A hit
 // too far from the camera for a reference at `radius` (truth::reliable_extent) is not
@@ -17,6 +17,7 @@
 // a surface is there.
 #pragma once
 
+#include <aogen/parallel.hpp>
 #include <aogen_scenes/gbuffer.hpp>
 
 #include <algorithm>
@@ -72,9 +73,10 @@ inline reference trace_reference(const aogen::truth::scene& t, const aogen::scen
                                         std::abs(g.position[3 * i + 2] - origin.z)});
         if (extent > reliable) r.valid[i] = 0, ++r.untrusted;
     }
-    const auto trace = [&](size_t first, size_t stride) {
-        for (size_t i = first; i < n; i += stride) {
-            if (!r.valid[i]) continue;
+    aogen::parallel_for(
+        n,
+        [&](size_t i) {
+            if (!r.valid[i]) return;
             aogen::truth::options o;
             o.radius = radius;
             o.grid = grid;
@@ -84,13 +86,8 @@ inline reference trace_reference(const aogen::truth::scene& t, const aogen::scen
             const aogen::truth::estimate e = t.ao(p, normal, o);
             r.ao[i] = float(e.value);
             r.standard_error[i] = float(e.standard_error);
-        }
-    };
-    std::vector<std::thread> workers;
-    const unsigned count = std::max(1u, threads);
-    for (unsigned k = 1; k < count; ++k) workers.emplace_back(trace, k, count);
-    trace(0, count);
-    for (std::thread& w : workers) w.join();
+        },
+        threads);
 
     detail::finish(r);
     return r;

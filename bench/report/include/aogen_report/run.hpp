@@ -51,6 +51,7 @@
 #include "reference.hpp"
 #include "settings.hpp"
 
+#include <aogen/parallel.hpp>
 #include <aogen/selection.hpp>
 #include <aogen/vulkan/chain.hpp>
 #include <aogen/vulkan/timing.hpp>
@@ -204,30 +205,6 @@ inline clock_record clocks_of(std::vector<double> mhz)
     std::sort(mhz.begin(), mhz.end());
     c.min = mhz.front(), c.max = mhz.back(), c.median = aogen::vulkan::spread_of(mhz).median;
     return c;
-}
-
-// Runs f(i) for i in [0, n) on every core; the first exception is rethrown.
-template <class F>
-void parallel_for(size_t n, F f)
-{
-    std::atomic<size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex m;
-    const auto work = [&] {
-        for (size_t i = next++; i < n; i = next++) {
-            try {
-                f(i);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(m);
-                if (!failure) failure = std::current_exception();
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
 }
 
 // The compiled size of each of the variant's shaders, in chain order.
@@ -454,7 +431,7 @@ inline std::optional<feature_saving> compare_twin(const variant_record& selected
 // The summaries of everything measured so far (calibration, medians, Pareto, savings).
 inline void summarise_all(report_data& out, const std::vector<int>& twin_of)
 {
-    parallel_for(out.variants.size() + out.twins.size(), [&](size_t i) {
+    aogen::parallel_for(out.variants.size() + out.twins.size(), [&](size_t i) {
         variant_record& v = i < out.variants.size() ? out.variants[i] : out.twins[i - out.variants.size()];
         calibrate(v, out.scenes);
         summarise(v);
@@ -575,7 +552,7 @@ inline report_data run_report(const report_settings& settings)
             r.runs.push_back(skipped.empty() ? detail::score(*records[k].second, gbuffers, scene) : run_record{skipped});
             if (skipped.empty()) scored.push_back(&r.runs.back()), ++out.phases.runs;
         }
-        detail::parallel_for(scored.size(), [&](size_t k) { detail::finish_scoring(*scored[k], scene); });
+        aogen::parallel_for(scored.size(), [&](size_t k) { detail::finish_scoring(*scored[k], scene); });
         out.phases.score += detail::seconds_since(score_start);
 
         // Timing: shipped chains, floors and twins bound in groups, each group interleaved.

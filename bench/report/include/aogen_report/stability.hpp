@@ -16,17 +16,22 @@
 //              most depth_mean;
 //     faults   with faults planted (the twin: the same scene without them), every output
 //              pixel farther than criterion.fault_reach from each fault within
-//              twin_pixel_max of the twin's, pixel by pixel.
+//              twin_pixel_max of the twin's, pixel by pixel;
+//     scales   with criterion.compare_scales, the scene scaled by each of scale_factors()
+//              (every length and the AO radius × 10⁻⁶ … 10⁶) gives the same AO as the scene,
+//              every output pixel within scale_max.
 //   The error criterion is skipped where criterion.compare_error is false: a case whose
-//   twin is the scene itself (depth_conventions) would compare its RMSE with itself.
+//   twin is the scene itself (depth_conventions, scale_invariance) would compare its RMSE
+//   with itself.
 //   A case may also plant faults in the G-buffer the variant reads (faults: a NaN depth or a
 //   zero normal at chosen pixels, which must give AO 1 there and change nothing else) and
 //   fix the noise tile to one rotation (noise_rotation: parallel or anti-parallel to a
 //   surface's normal).
 //
-//   builtin_case_names() lists the 30 built-in cases (DESIGN.md's extreme cases, and fields
+//   builtin_case_names() lists the 31 built-in cases (DESIGN.md's extreme cases, and fields
 //   of view from 0.1° to 175°, extreme aspect ratios, 1×1 and 8×8 images, D16/D24 depth,
-//   tiny and huge radii, geometry cut by the near plane, sub-millimetre geometry);
+//   tiny and huge radii, geometry cut by the near plane, sub-millimetre geometry, the
+//   same scene at thirteen scales);
 //   builtin_case(name) makes one. read_case reads a case file (JSON, below), so users add
 //   their own.
 //
@@ -35,7 +40,8 @@
 //    "scene": {...scene JSON (scene.hpp)...}, "twin": {...scene JSON...},   (both required)
 //    "criterion": {"error_ratio": 1.5, "error_slack": 0.03, "max_excess": 1e-5,
 //                  "compare_depth": false, "depth_max": 0.0118, "depth_mean": 0.002,
-//                  "compare_error": true, "fault_reach": 12, "twin_pixel_max": 0.0039},
+//                  "compare_error": true, "fault_reach": 12, "twin_pixel_max": 0.0039,
+//                  "compare_scales": false, "scale_max": 0.0039},
 //    "faults": [{"kind": "nan_depth" | "zero_normal", "at": [u, v]}],        (u, v in [0, 1])
 //    "noise_rotation": [x, y],
 //    "twin_window": [x, y]}           (the scene's image is the twin's from pixel (x, y) on)
@@ -66,7 +72,21 @@ struct stability_criterion {
     // each fault within twin_pixel_max of the unfaulted twin's — "nothing else changed".
     double fault_reach = 0;
     double twin_pixel_max = 1.0 / 255.0;
+    // Scale invariance: the scene × each of scale_factors(), every output pixel within
+    // scale_max of the scene's own — AO is a ratio of lengths, so nothing may change.
+    bool compare_scales = false;
+    double scale_max = 1.0 / 255.0;
 };
+
+// The factors compare_scales multiplies a scene by: the powers of ten from 10⁻⁶ to 10⁶
+// other than 1 (a 2 µm box and a 2000 km one, with their radii).
+inline std::vector<double> scale_factors()
+{
+    std::vector<double> k;
+    for (int e = -6; e <= 6; ++e)
+        if (e != 0) k.push_back(std::pow(10.0, e));
+    return k;
+}
 
 // A fault planted in the G-buffer a variant reads (not in the reference's).
 struct gbuffer_fault {
@@ -166,7 +186,7 @@ inline std::vector<std::string> builtin_case_names()
             "near_far_km", "depth_past_fp16", "radius_0p1px", "radius_past_screen", "ortho_near0_offcentre", "far_from_origin",
             "blur_weights_underflow", "odd_size_half", "nan_depth_texel", "zero_normal", "normals_away", "fov_0p1",
             "fov_120", "fov_175", "aspect_wide", "aspect_tall", "image_1x1", "image_8x8", "depth_d16", "depth_d24",
-            "radius_tiny", "radius_huge", "near_plane_cut", "sub_millimetre"};
+            "radius_tiny", "radius_huge", "near_plane_cut", "sub_millimetre", "scale_invariance"};
 }
 
 inline stability_case builtin_case(const std::string& name)
@@ -374,6 +394,16 @@ inline stability_case builtin_case(const std::string& name)
         s = detail::scaled(box, 2e-6);
         return make(name, "the scene 500 000 times smaller: a 2 µm box, AO radius 1e-6", s, t);
     }
+    if (name == "scale_invariance") {
+        // The box on its floor at 10⁻⁶ … 10⁶ of its size, the camera, its near and far planes
+        // and the AO radius scaled with it: every quantity the shaders compare is a ratio of
+        // two lengths, so the AO must not change beyond rounding. An absolute epsilon in a
+        // shader (a `max(d, 1e-4)`, a fixed bias) shows here first, at one end of the range.
+        stability_case c = make(name, "the scene and its AO radius scaled by 10⁻⁶ … 10⁶: the same AO, pixel by pixel", s, t);
+        c.criterion.compare_scales = true;
+        c.criterion.compare_error = false;
+        return c;
+    }
     std::string valid;
     for (const std::string& n : builtin_case_names()) valid += (valid.empty() ? "" : ", ") + n;
     aogen::fail("built-in stability case", aogen::quote(name) + " is not known", "valid: " + valid);
@@ -396,7 +426,7 @@ inline stability_case read_case(const std::string& text, const std::string& sour
     if (root.has("criterion")) {
         const aogen::tools::json_reader k = root.field("criterion");
         k.only_keys({"error_ratio", "error_slack", "max_excess", "compare_depth", "depth_max", "depth_mean", "compare_error", "fault_reach",
-                     "twin_pixel_max"});
+                     "twin_pixel_max", "compare_scales", "scale_max"});
         stability_criterion& cr = c.criterion;
         const auto number = [&](const char* key, double& out, double lo, double hi) {
             if (!k.has(key)) return;
@@ -410,7 +440,9 @@ inline stability_case read_case(const std::string& text, const std::string& sour
         number("depth_mean", cr.depth_mean, 0, 1);
         number("fault_reach", cr.fault_reach, 0, 1e6);
         number("twin_pixel_max", cr.twin_pixel_max, 0, 1);
+        number("scale_max", cr.scale_max, 0, 1);
         if (k.has("compare_depth")) cr.compare_depth = k.boolean("compare_depth");
+        if (k.has("compare_scales")) cr.compare_scales = k.boolean("compare_scales");
         if (k.has("compare_error")) cr.compare_error = k.boolean("compare_error");
     }
     if (root.has("faults")) {

@@ -10,7 +10,9 @@
 //        the case's faults planted, and its noise rotation if it fixes one), one run, the AO
 //        read back; the reference traced on the world G-buffer (grid² rays per pixel);
 //     3. with criterion.compare_depth, the same in standard, reversed and reversed-infinite
-//        depth, each compared pixel by pixel with standard depth;
+//        depth, each compared pixel by pixel with standard depth; with compare_scales, the
+//        same on the scene scaled by each of scale_factors(), compared pixel by pixel with
+//        the scene's own;
 //   and judges it: raw NaN/Inf, raw excess beyond [0, 1], background exactly 1, output in
 //   [0, 1], RMSE against the twin's, the depth differences. The first check that fails
 //   decides ("NaN 3 in blur_x", "background 12 px not 1", "RMSE 0.21 > 1.5 × 0.06 + 0.03").
@@ -48,6 +50,7 @@ struct suite_settings {
     int grid = 32; // reference rays per pixel: grid²
     aogen::vulkan::device_options device;
     std::function<void(const std::string&)> progress = [](const std::string&) {};
+    aogen::codegen::template_reader templates; // the shaders' templates: empty, the embedded ones (a test plants a mutant here)
 };
 
 // One variant on one case.
@@ -62,6 +65,8 @@ struct suite_run {
     double depth_max = 0, depth_mean = 0; // compare_depth only
     double twin_pixel_max = 0;            // faults only: the largest difference from the twin beyond fault_reach
     double changed_reach = 0;             // faults only: the farthest pixel (from its fault) that differs by more than twin_pixel_max
+    double scale_max = 0;                 // compare_scales only: the largest difference from the unscaled scene's AO
+    double scale_worst = 1;               //   and the factor it was read at
     bool ran() const { return skipped.empty(); }
 };
 
@@ -111,17 +116,19 @@ inline aogen::variant adapted(aogen::variant v, const aogen::scenes::camera& c)
 // Diagnostic chains, compiled once per variant name for the whole suite.
 class chain_cache {
 public:
-    explicit chain_cache(aogen::vulkan::context& ctx) : ctx_(ctx) {}
+    chain_cache(aogen::vulkan::context& ctx, aogen::codegen::template_reader templates) : ctx_(ctx), templates_(std::move(templates)) {}
     const aogen::vulkan::chain& get(const aogen::variant& v)
     {
         const std::string name = aogen::to_name(v);
         auto it = chains_.find(name);
         if (it != chains_.end()) return *it->second;
-        return *chains_.emplace(name, std::make_unique<aogen::vulkan::chain>(ctx_, v, aogen::vulkan::chain_options{true}, &spirv_)).first->second;
+        return *chains_.emplace(name, std::make_unique<aogen::vulkan::chain>(ctx_, v, aogen::vulkan::chain_options{true, templates_}, &spirv_))
+                    .first->second;
     }
 
 private:
     aogen::vulkan::context& ctx_;
+    aogen::codegen::template_reader templates_;
     aogen::vulkan::spirv_cache spirv_;
     std::map<std::string, std::unique_ptr<aogen::vulkan::chain>> chains_;
 };
@@ -290,10 +297,19 @@ inline void judge(suite_run& r, const stability_criterion& k, const std::vector<
                        fixed_text(k.twin_pixel_max * 255, 1) + "/255)";
         return;
     }
+    if (k.compare_scales && r.scale_max > k.scale_max) {
+        r.decided_by = "scaled by " + aogen::format_number(r.scale_worst) + " a pixel differs by " + fixed_text(r.scale_max * 255, 1) +
+                       "/255 (at most " + fixed_text(k.scale_max * 255, 1) + "/255)";
+        return;
+    }
     if (!k.compare_error) {
         r.pass = true;
-        r.decided_by = k.compare_depth ? "depth conventions agree within " + fixed_text(r.depth_max, 4) + " (mean " + fixed_text(r.depth_mean, 5) + ")"
-                                       : "no check failed";
+        if (k.compare_depth)
+            r.decided_by = "depth conventions agree within " + fixed_text(r.depth_max, 4) + " (mean " + fixed_text(r.depth_mean, 5) + ")";
+        else if (k.compare_scales)
+            r.decided_by = "every scale within " + fixed_text(r.scale_max * 255, 2) + "/255 (largest at × " + aogen::format_number(r.scale_worst) + ")";
+        else
+            r.decided_by = "no check failed";
         return;
     }
     r.error_limit = k.error_ratio * r.twin_rmse + k.error_slack;
@@ -309,13 +325,16 @@ inline suite_data run_suite(const suite_settings& settings)
     if (settings.cases.empty()) aogen::fail("stability suite", "no cases", "valid: at least one case");
     if (settings.variants.empty()) aogen::fail("stability suite", "no variants", "valid: at least one variant");
     // What makes a case impossible to score, before anything runs.
-    for (const stability_case& c : settings.cases)
+    for (const stability_case& c : settings.cases) {
         for (const aogen::scenes::scene* s : {&c.scene, &c.twin}) {
             require_radius_works(*s);
             aogen::scenes::require_scoreable(*s, *aogen::scenes::make_tracer(*s));
         }
+        if (c.criterion.compare_scales)
+            for (double k : scale_factors()) require_radius_works(detail::scaled(c.scene, k));
+    }
     aogen::vulkan::context ctx(settings.device);
-    detail::chain_cache chains(ctx);
+    detail::chain_cache chains(ctx, settings.templates);
     suite_data out;
     out.device = ctx.device_name();
     out.grid = settings.grid;
@@ -326,6 +345,11 @@ inline suite_data run_suite(const suite_settings& settings)
         settings.progress("[case " + std::to_string(ci + 1) + "/" + std::to_string(settings.cases.size()) + "] " + c.name);
         const detail::prepared_scene scene = detail::prepare(c.scene, settings.grid), twin = detail::prepare(c.twin, settings.grid);
         suite_case_record record{c, scene.truth.noise_rms, {}};
+        // The scaled scenes: only their G-buffers and which pixels hold geometry are read, so
+        // the fewest reference rays (2 × 2) are enough.
+        std::vector<std::pair<double, detail::prepared_scene>> scaled;
+        if (c.criterion.compare_scales)
+            for (double k : scale_factors()) scaled.emplace_back(k, detail::prepare(detail::scaled(c.scene, k), 2));
         for (const aogen::variant& base : settings.variants) {
             suite_run r;
             const aogen::variant v = detail::adapted(base, c.scene.camera), vt = detail::adapted(base, c.twin.camera);
@@ -357,7 +381,17 @@ inline suite_data run_suite(const suite_settings& settings)
                     }
                     r.depth_mean = std::max(r.depth_mean, sum / double(std::max<size_t>(1, o.out.ao.size())));
                 }
-            detail::judge(r, c.criterion, a.out.passes, a.out.raw);
+            // Raw NaN, Inf and excess are judged over every run of the variant on the case.
+            std::vector<aogen::vulkan::raw_counts> per_pass = a.out.raw;
+            for (const auto& [k, p] : scaled) {
+                const detail::one_run o = detail::run_once(ctx, chains, v, p, c.faults, c.noise_rotation);
+                for (size_t i = 0; i < per_pass.size(); ++i) per_pass[i] += o.out.raw[i], r.raw += o.out.raw[i];
+                for (size_t i = 0; i < o.out.ao.size(); ++i) {
+                    const double diff = std::fabs(double(o.out.ao[i]) - a.out.ao[i]);
+                    if (diff > r.scale_max) r.scale_max = diff, r.scale_worst = k;
+                }
+            }
+            detail::judge(r, c.criterion, a.out.passes, per_pass);
             record.runs.push_back(r);
         }
         out.cases.push_back(std::move(record));

@@ -9,10 +9,12 @@
 // the figure that decided it, and what could not run. results.json: every run's numbers:
 //   {"aogen_report": 2, "suite": "stability", "device", "command", "rays_per_pixel",
 //    "failures", "cases": [{name, about, source, truth_noise_rms,
-//      criterion: {error_ratio, error_slack, max_excess, compare_depth, depth_max, depth_mean},
+//      criterion: {error_ratio, error_slack, max_excess, compare_depth, depth_max, depth_mean,
+//                  compare_error, fault_reach, twin_pixel_max, compare_scales, scale_max},
 //      runs: [{variant, skipped | {pass, decided_by, rmse, twin_rmse, error_limit,
 //              raw: {nan, inf, below_zero, above_one, max_excess},
-//              background_pixels, background_not_one, depth_max, depth_mean}}]}]}
+//              background_pixels, background_not_one, depth_max, depth_mean,
+//              twin_pixel_max, changed_reach (with faults), scale_max, scale_worst (with compare_scales)}}]}]}
 #pragma once
 
 #include "number_text.hpp"
@@ -50,6 +52,7 @@ inline std::string suite_json(const suite_data& d, const std::string& command)
                 e["depth_max"] = r.depth_max, e["depth_mean"] = r.depth_mean;
             }
             if (!c.c.faults.empty()) e["twin_pixel_max"] = r.twin_pixel_max, e["changed_reach"] = r.changed_reach;
+            if (k.compare_scales) e["scale_max"] = r.scale_max, e["scale_worst"] = r.scale_worst;
             runs.push_back(e);
         }
         j["cases"].push_back({{"name", c.c.name},
@@ -58,7 +61,8 @@ inline std::string suite_json(const suite_data& d, const std::string& command)
                               {"truth_noise_rms", c.truth_noise},
                               {"criterion", {{"error_ratio", k.error_ratio}, {"error_slack", k.error_slack}, {"max_excess", k.max_excess},
                                              {"compare_depth", k.compare_depth}, {"depth_max", k.depth_max}, {"depth_mean", k.depth_mean},
-                                             {"compare_error", k.compare_error}, {"fault_reach", k.fault_reach}, {"twin_pixel_max", k.twin_pixel_max}}},
+                                             {"compare_error", k.compare_error}, {"fault_reach", k.fault_reach}, {"twin_pixel_max", k.twin_pixel_max},
+                                             {"compare_scales", k.compare_scales}, {"scale_max", k.scale_max}}},
                               {"runs", runs}});
     }
     return j.dump(2) + "\n";
@@ -77,7 +81,8 @@ inline std::string suite_markdown(const suite_data& d, const std::string& comman
     md << "**How to read it.** Each case is a scene at an extreme and its benign twin (aogen_report/stability.hpp). A run passes "
           "when no pass computed a NaN or an infinity (raw values, before the guard that keeps them from the output), no raw value "
           "lies outside [0, 1] by more than rounding, every background pixel (and every planted fault) is exactly 1, the depth "
-          "conventions agree where the case compares them, and the RMSE against the ray-traced reference is at most the case's "
+          "conventions agree where the case compares them, a faulted scene matches its twin pixel by pixel away from its faults, "
+          "a scaled scene matches the scene pixel by pixel, and the RMSE against the ray-traced reference is at most the case's "
           "ratio times the same variant's RMSE on the twin plus a slack. Each variant runs in the projection of the case's camera.\n\n";
 
     md << "## Cases\n\nEach case's run closest to its error limit, with the figure that decided it (every run's is in "
@@ -91,8 +96,9 @@ inline std::string suite_markdown(const suite_data& d, const std::string& comman
         const std::string depth = k.compare_depth ? "depth Δ ≤ " + fixed(k.depth_max, 4) : "";
         const std::string pixels = d.cases[i].c.faults.empty() ? "" : "twin Δ ≤ " + fixed(k.twin_pixel_max * 255, 1) + "/255 beyond " +
                                                                        fixed(k.fault_reach, 0) + " px of a fault";
+        const std::string scales = k.compare_scales ? "× 10⁻⁶ … 10⁶ Δ ≤ " + fixed(k.scale_max * 255, 1) + "/255" : "";
         std::string criterion;
-        for (const std::string& part : {error, depth, pixels})
+        for (const std::string& part : {error, depth, pixels, scales})
             if (!part.empty()) criterion += (criterion.empty() ? "" : "; ") + part;
         md << "| " << i + 1 << " | " << d.cases[i].c.name << " | " << d.cases[i].c.about << " | " << criterion << " | " << fixed(d.cases[i].truth_noise, 4)
            << " | " << (closest ? "`" + closest->variant + "`: " + closest->decided_by : "–") << " |\n";

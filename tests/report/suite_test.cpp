@@ -1,0 +1,54 @@
+// The stability suite's scale invariance (aogen_report/stability.hpp, case scale_invariance)
+// run here on one variant of each technique, with the templates a planted mutant may replace
+// (tests/mutants/mutants.json): AO is a ratio of lengths, so the box on its floor at 10⁻⁶ …
+// 10⁶ of its size, its camera and AO radius scaled with it, must give the same AO within one
+// step of the 8-bit output (1/255) at every pixel. An absolute length in a shader — a fixed
+// bias, an epsilon compared with a distance — breaks it at one end of the range; the mutants
+// plant three (ctest -L mutants) and this test must fail on each.
+#include "mutants/mutants.hpp"
+
+#include <aogen_report/suite.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <iostream>
+
+namespace {
+
+aogen_report::suite_data run_scale_case(const std::string& variant)
+{
+    aogen_report::suite_settings s;
+    s.cases = {aogen_report::builtin_case("scale_invariance")};
+    s.variants = {aogen::variant_from_name(variant)};
+    s.grid = 2; // the case is judged pixel by pixel against itself: its reference is not read
+    s.templates = aogen_test::template_under_test;
+    return aogen_report::run_suite(s);
+}
+
+} // namespace
+
+TEST_CASE("stability: each technique gives the same AO, pixel by pixel, at 1e-6 ... 1e6 of the scene's size", "[suite]")
+{
+    for (const char* name : {"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "gtao-2x2-half-denoise-gbufworld-std-persp-cs",
+                             "vbao-2x3-half-bilateral-gbufworld-std-persp-cs"}) {
+        const aogen_report::suite_data d = run_scale_case(name);
+        REQUIRE(d.cases.size() == 1);
+        REQUIRE(d.cases[0].runs.size() == 1);
+        const aogen_report::suite_run& r = d.cases[0].runs[0];
+        INFO(name << ": " << r.decided_by);
+        REQUIRE(r.ran());
+        CHECK(r.raw.nan == 0);
+        CHECK(r.raw.inf == 0);
+        CHECK(r.scale_max <= 1.0 / 255.0);
+        CHECK(r.pass);
+    }
+}
+
+TEST_CASE("stability: the scale factors are the powers of ten from 1e-6 to 1e6 but 1", "[suite]")
+{
+    const std::vector<double> k = aogen_report::scale_factors();
+    REQUIRE(k.size() == 12);
+    CHECK(k.front() == Approx(1e-6).epsilon(1e-12));
+    CHECK(k.back() == Approx(1e6).epsilon(1e-12));
+    for (double f : k) CHECK(f != 1.0);
+}
