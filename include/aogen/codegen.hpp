@@ -29,49 +29,19 @@
 //   shader. Its text is the same for every pass and variant (it has no defines), so a
 //   caller can compile it once.
 //
-// RESOURCES (descriptor set 0 / bind group 0; aogen/bindings.hpp's table)
-//   resources(v, pass, stage, o) lists what one shader binds, each with its role, kind,
-//   binding and GLSL name, and generate() declares them from that list, after the uniform
-//   block — the templates declare no resource, they use the names:
-//     u (the uniform block: SsaoUniforms, GtaoUniforms, VbaoUniforms or BlurUniforms),
-//     u_depth, u_normals (G-buffer variants), u_noise, u_ao_input (filter passes),
-//     u_output (compute passes), u_raw (options::diagnostics)
-//   options::model picks the binding model (bindings.hpp):
-//     vulkan   every texture a combined sampler2D (what GLSL, ESSL, HLSL and MSL are made from)
-//     webgpu   textures as texture2D; a gathered one (u_depth, u_ao_input) with a sampler at
-//              the next binding and `#define u_depth sampler2D(u_depth_texture,
-//              u_depth_sampler)`, so the templates read alike in both; the others read with
-//              texelFetch under GL_EXT_samplerless_texture_functions (WGSL's textureLoad).
-//              What the WGSL target is made from (compile/wgsl.hpp).
-//   Fragment passes write `layout(location = 0) out float`. The raw image is r32f.
+// THE PLAN
+//   generate(v, o) is generate(make_plan(v, o)): plan.hpp validates the variant and the
+//   options once and lists every shader's defines, resources, files, constants and block;
+//   this header only writes them out. A caller that generates, compiles and runs a variant
+//   makes the plan once and hands it on. The options (output format, diagnostics, binding
+//   model, template reader) and the resource table are documented in plan.hpp.
 //
-// OPTIONS (codegen::options; generate(v) uses the defaults)
-//   output_format   the format qualifier of compute passes' output image, written as
-//                   `#define AO_OUTPUT_FORMAT <fmt>` and used by entry_compute.glsl:
-//                     r8       (default) one 8-bit unorm channel: Vulkan, desktop GL, D3D, Metal
-//                     rgba8    for OpenGL ES 3.1 (ESSL 310 has no r8 image format, and
-//                              compile.hpp's essl target refuses one): the AO is in .r,
-//                              written as (ao, 0, 0, 1)
-//                     r32f, rgba16f   float targets (both exist in ESSL 310 too)
-//                   Anything else is an aogen::error naming these four. The format of the
-//                   VkImage / texture the caller binds must match. Fragment shaders have no
-//                   output image: the option changes nothing in them (it is still validated).
-//                   Every compute pass of a variant (AO and blurs) gets the same format;
-//                   the blur passes read the AO pass's output's .r through a sampler2D, so
-//                   any of the four feeds them.
-//   diagnostics     false (default): the shipped shaders. true: every pass also stores the
-//                   value it computed *before* ao_finalize's guard — NaN, infinities and
-//                   values outside [0, 1] included — to an r32f storage image `raw` of the
-//                   AO target's size (`#define AO_DIAGNOSTICS`; entry_*.glsl). Its output
-//                   stays what the shipped shader writes. For a harness that checks the
-//                   numerics (aogen::vulkan counts what the raw images hold), not for a
-//                   renderer: fragment passes then store to an image, which needs the
-//                   device's fragmentStoresAndAtomics, and ESSL 300 cannot express it.
-//   templates       empty (default): generate(v, o) reads the embedded templates. A reader
-//                   (directory_reader(dir), or any function from path to text) replaces
-//                   them wherever the options travel — the Vulkan harness, emitted_texts —
-//                   so a template under development, or a test's planted fault in one
-//                   (tests/mutants/), runs through every consumer unchanged.
+//   What the writing adds: WebGPU's gathered textures (u_depth, u_ao_input) are declared as
+//   u_<role>_texture with `#define u_depth sampler2D(u_depth_texture, u_depth_sampler)`, so
+//   the templates read alike in both binding models; the others are read with texelFetch
+//   under GL_EXT_samplerless_texture_functions (WGSL's textureLoad). Fragment passes write
+//   `layout(location = 0) out float`. Compute passes get `#define AO_OUTPUT_FORMAT <fmt>`
+//   (entry_compute.glsl). The raw image of options::diagnostics is r32f.
 //
 // USAGE
 //     #include <aogen/codegen.hpp>
@@ -99,22 +69,19 @@
 //   orders enter the output. A source depends only on what its pass compiles with (the
 //   variant's name is in shader_source::name, not in the text), so variants that differ
 //   only in another pass -- ssao-...-bilateral and ssao-...-box share their AO pass --
-//   give byte-identical sources, which a caller may compile once. Line endings of template files read from a directory are
-//   normalised to "\n", as the embedded copy's are.
+//   give byte-identical sources, which a caller may compile once. Line endings of template
+//   files read from a directory are normalised to "\n", as the embedded copy's are.
 //
 // ERRORS
 //   aogen::error: an invalid variant (validate()), an output format not in the list
 //   above, an unreadable template file (naming the path), no embedded templates.
 #pragma once
 
-#include "bindings.hpp"
 #include "declare.hpp"
 #include "error.hpp"
 #include "layout.hpp"
 #include "names.hpp"
-#include "params.hpp"
-#include "uniforms.hpp"
-#include "variant.hpp"
+#include "plan.hpp"
 
 #if defined(__has_include)
 #if __has_include(<aogen/templates_embedded.hpp>)
@@ -135,109 +102,7 @@
 
 namespace aogen::codegen {
 
-// ---------------------------------------------------------------------------------
-// Stages and resources
-// ---------------------------------------------------------------------------------
-
-using aogen::shader_stage; // defined in variant.hpp, shared with compile.hpp
-using aogen::file_extension;
-
-enum class resource_kind { uniform_buffer, combined_image_sampler, sampled_image, sampler, storage_image };
-inline constexpr std::array<enum_name<resource_kind>, 5> resource_kind_names{{
-    {resource_kind::uniform_buffer, "uniform_buffer"},
-    {resource_kind::combined_image_sampler, "combined_image_sampler"},
-    {resource_kind::sampled_image, "sampled_image"},
-    {resource_kind::sampler, "sampler"},
-    {resource_kind::storage_image, "storage_image"},
-}};
-static_assert(names::distinct(resource_kind_names));
-
-inline const char* to_name(resource_kind k) { return names::name_of(resource_kind_names, k, "resource kind"); }
-
-// ---------------------------------------------------------------------------------
-// Options
-// ---------------------------------------------------------------------------------
-
-// How the sources are generated, beyond the variant (see OPTIONS above).
-// Reads a template by its path relative to the templates directory ("common/core.glsl").
-using template_reader = std::function<std::string(const std::string& path)>;
-
-struct options {
-    std::string output_format = "r8"; // compute passes' output image: r8, rgba8, r32f, rgba16f
-    bool diagnostics = false;         // every pass also stores its raw, unguarded value (see OPTIONS)
-    binding_model model = binding_model::vulkan; // combined samplers, or WebGPU's separate ones (RESOURCES)
-    template_reader templates;        // where generate(v, o) reads templates; empty: the embedded ones
-};
-
-// The output formats options::output_format accepts, in the order error messages list them.
-inline constexpr std::array<std::string_view, 4> output_formats{{"r8", "rgba8", "r32f", "rgba16f"}};
-
-// aogen::error unless every option is valid.
-inline void validate(const options& o)
-{
-    names::require_listed(binding_model_names, o.model, "binding model");
-    const bool known = std::find(output_formats.begin(), output_formats.end(), o.output_format) != output_formats.end();
-    std::string valid;
-    for (std::string_view f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f);
-    if (!known) fail("output format", quote(o.output_format) + " is not a storage image format aogen writes", "valid: " + valid);
-    // Core WebGPU's storage textures have no one-channel 8-bit format (r8unorm).
-    if (o.model == binding_model::webgpu && o.output_format == "r8")
-        fail("output format", "r8 is not a storage texture format of core WebGPU", "valid: rgba8, r32f, rgba16f");
-}
-
-// One descriptor a shader declares (RESOURCES). `name` is its role's name ("depth"), or
-// "<role>_sampler" for the sampler WebGPU pairs with a gathered texture; codegen also
-// writes its binding as #define AO_BINDING_<NAME>.
-struct resource {
-    uint32_t set = 0;
-    uint32_t binding = 0;
-    resource_kind kind = resource_kind::combined_image_sampler;
-    std::string name;
-    std::string block;  // uniform buffers: the block's type name (SsaoUniforms, ...)
-    std::string format; // storage images: the format qualifier (options::output_format)
-    resource_role role = resource_role::depth;
-};
-
-// The stages a variant's pass runs as: compute, or vertex + fragment.
-inline std::vector<shader_stage> stages(const variant& v)
-{
-    names::require_listed(pipeline_stage_names, v.stage, "stage");
-    if (v.stage == pipeline_stage::compute) return {shader_stage::compute};
-    return {shader_stage::vertex, shader_stage::fragment};
-}
-
 namespace detail {
-
-inline void require_stage(const variant& v, shader_stage stage)
-{
-    names::require_listed(shader_stage_names, stage, "shader stage");
-    const bool ok = v.stage == pipeline_stage::compute ? stage == shader_stage::compute
-                                                       : stage != shader_stage::compute;
-    if (!ok)
-        fail("shader stage", std::string(to_name(stage)) + " is not a stage of a " +
-                                 names::name_of(pipeline_stage_names, v.stage, "stage") + " variant",
-             v.stage == pipeline_stage::compute ? "valid: compute" : "valid: vertex, fragment");
-}
-
-inline void require_pass(const variant& v, pass_kind pass)
-{
-    names::require_listed(pass_kind_names, pass, "pass");
-    for (pass_kind p : passes(v))
-        if (p == pass) return;
-    std::string valid;
-    for (pass_kind p : passes(v)) valid += (valid.empty() ? "" : ", ") + std::string(names::name_of(pass_kind_names, p, "pass"));
-    fail("pass", std::string(names::name_of(pass_kind_names, pass, "pass")) + " is not a pass of " + to_name(v),
-         "valid: " + valid);
-}
-
-// A float as a GLSL literal that reads back to the same float: the shortest round-trip
-// digits, with ".0" added when they would otherwise read as an int.
-inline std::string glsl_float(float value)
-{
-    std::string s = format_number(value);
-    if (s.find_first_of(".en") == std::string::npos) s += ".0";
-    return s;
-}
 
 inline std::string upper(std::string s)
 {
@@ -245,52 +110,6 @@ inline std::string upper(std::string s)
         if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
     return s;
 }
-
-} // namespace detail
-
-// The uniform block of a variant's pass (aogen/uniforms.hpp).
-inline layout::block_desc uniform_block(const variant& v, pass_kind pass)
-{
-    validate(v);
-    detail::require_pass(v, pass);
-    if (pass != pass_kind::ao) return uniforms::blur_block();
-    if (v.tech == technique::gtao) return uniforms::gtao_block();
-    if (v.tech == technique::vbao) return uniforms::vbao_block();
-    return uniforms::ssao_block(v.ssao_samples); // the point-cloud fallback too
-}
-
-// The descriptors one shader of a variant's pass declares, by binding (bindings.hpp).
-inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_stage stage, const options& o = {})
-{
-    validate(v);
-    validate(o);
-    detail::require_pass(v, pass);
-    detail::require_stage(v, stage);
-    if (stage == shader_stage::vertex) return {};
-    using k = resource_kind;
-    const pass_family family = family_of(pass);
-    std::vector<resource> r;
-    for (resource_role role : pass_roles(family)) {
-        const bool declared = role == resource_role::normals  ? v.normals != normal_source::reconstructed
-                              : role == resource_role::output ? stage == shader_stage::compute
-                              : role == resource_role::raw    ? o.diagnostics
-                                                              : true;
-        if (!declared) continue;
-        const uint32_t binding = binding_of(family, role, o.model);
-        const std::string name = to_name(role);
-        if (role == resource_role::uniforms) r.push_back({0, binding, k::uniform_buffer, name, uniform_block(v, pass).root.name, "", role});
-        else if (role == resource_role::output) r.push_back({0, binding, k::storage_image, name, "", o.output_format, role});
-        else if (role == resource_role::raw) r.push_back({0, binding, k::storage_image, name, "", "r32f", role});
-        else if (o.model == binding_model::vulkan) r.push_back({0, binding, k::combined_image_sampler, name, "", "", role});
-        else {
-            r.push_back({0, binding, k::sampled_image, name, "", "", role});
-            if (auto s = sampler_binding_of(family, role, o.model)) r.push_back({0, *s, k::sampler, name + "_sampler", "", "", role});
-        }
-    }
-    return r;
-}
-
-namespace detail {
 
 // The GLSL declaration of one non-block resource (RESOURCES).
 inline std::string declaration(const resource& r)
@@ -314,60 +133,6 @@ inline std::string declaration(const resource& r)
 }
 
 } // namespace detail
-
-// The template files of one shader, in the order they are concatenated.
-inline std::vector<std::string> template_files(const variant& v, pass_kind pass, shader_stage stage)
-{
-    validate(v);
-    detail::require_pass(v, pass);
-    detail::require_stage(v, stage);
-    if (stage == shader_stage::vertex) return {"common/fullscreen_vertex.glsl"};
-    std::vector<std::string> files{"common/core.glsl", "common/depth.glsl"};
-    switch (pass) {
-    case pass_kind::ao:
-        files.insert(files.end(), {"common/normals.glsl", "common/noise.glsl"});
-        if (v.tech == technique::gtao) {
-            files.insert(files.end(), {"common/slices.glsl", "gtao.glsl"});
-        } else if (v.tech == technique::vbao) {
-            files.insert(files.end(), {"common/slices.glsl", "vbao.glsl"});
-        } else {
-            if (v.point_cloud_fallback) files.push_back("ssao_point_cloud.glsl");
-            files.push_back("ssao.glsl");
-        }
-        break;
-    case pass_kind::blur_x:
-    case pass_kind::blur_y: files.push_back("blur_bilateral.glsl"); break;
-    case pass_kind::blur_box: files.push_back("blur_box.glsl"); break;
-    case pass_kind::blur_denoise: files.push_back("blur_denoise.glsl"); break;
-    case pass_kind::upsample: files.push_back("upsample.glsl"); break;
-    }
-    files.push_back(stage == shader_stage::compute ? "entry_compute.glsl" : "entry_fragment.glsl");
-    return files;
-}
-
-// The constants a pass's templates take from aogen's headers, as (name, GLSL value).
-inline std::vector<define> constants(const variant& v, pass_kind pass)
-{
-    validate(v);
-    detail::require_pass(v, pass);
-    std::vector<define> c;
-    if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
-        for (size_t i = 0; i < blur_params::bilateral_weights.size(); ++i)
-            c.push_back({"AO_BLUR_WEIGHT_" + std::to_string(i), detail::glsl_float(blur_params::bilateral_weights[i])});
-    } else if (pass == pass_kind::blur_box) {
-        c.push_back({"AO_BLUR_BOX_SIZE", std::to_string(blur_params::box_size)});
-    } else if (pass == pass_kind::blur_denoise) {
-        c.push_back({"AO_DENOISE_RADIUS", std::to_string(blur_params::denoise_radius)});
-        for (size_t i = 0; i < blur_params::denoise_weights.size(); ++i)
-            c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), detail::glsl_float(blur_params::denoise_weights[i])});
-    } else if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
-        c.push_back({"AO_PC_BACKGROUND_DEPTH", detail::glsl_float(point_cloud::background_depth)});
-        c.push_back({"AO_PC_SAME_DEPTH", detail::glsl_float(point_cloud::same_depth_tolerance)});
-        c.push_back({"AO_PC_CAVITY_THRESHOLD", detail::glsl_float(point_cloud::cavity_threshold)});
-        c.push_back({"AO_PC_RING_PIXELS", std::to_string(point_cloud::ring_pixels)});
-    }
-    return c;
-}
 
 // ---------------------------------------------------------------------------------
 // Template texts
@@ -444,59 +209,55 @@ struct shader_source {
     std::vector<resource> resources; // its descriptors (set 0), by binding
 };
 
-// One shader of one pass, its templates read by `read`.
-inline shader_source generate_shader(const variant& v, pass_kind pass, shader_stage stage, const template_reader& read,
-                                     const options& o = {})
+namespace detail {
+
+// The source of one planned shader, its templates read by `read`.
+inline shader_source write_shader(const shader_plan& p, const variant& v, const options& o, const template_reader& read)
 {
-    validate(v);
-    validate(o);
-    detail::require_pass(v, pass);
-    detail::require_stage(v, stage);
     shader_source s;
-    s.pass = pass;
-    s.stage = stage;
-    s.name = to_name(v) + "." + names::name_of(pass_kind_names, pass, "pass") + "." + file_extension(stage);
-    s.files = template_files(v, pass, stage);
-    s.resources = resources(v, pass, stage, o);
+    s.pass = p.pass;
+    s.stage = p.stage;
+    s.name = p.name;
+    s.files = p.files;
+    s.resources = p.resources;
 
     std::string& g = s.glsl;
     g = "#version 450\n#extension GL_GOOGLE_cpp_style_line_directive : require\n";
     // A GLSL #extension must come before the first declaration; ao_half (common/core.glsl) needs it.
-    if (v.fp16 && pass == pass_kind::ao && stage != shader_stage::vertex)
+    if (v.fp16 && p.pass == pass_kind::ao && p.stage != shader_stage::vertex)
         g += "#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n";
     // WebGPU's textures without a sampler are read with texelFetch/textureSize on a texture2D.
-    if (o.model == binding_model::webgpu && stage != shader_stage::vertex)
+    if (o.model == binding_model::webgpu && p.stage != shader_stage::vertex)
         g += "#extension GL_EXT_samplerless_texture_functions : require\n";
-    if (stage == shader_stage::vertex) {
+    if (p.stage == shader_stage::vertex) {
         g += "// aogen: the fullscreen-triangle vertex shader of every fragment pass. Generated by aogen::codegen; do not edit.\n";
     } else {
-        g += "// aogen: pass " + std::string(names::name_of(pass_kind_names, pass, "pass")) + ", " + to_name(stage) +
+        g += "// aogen: pass " + std::string(names::name_of(pass_kind_names, p.pass, "pass")) + ", " + to_name(p.stage) +
              " shader. Generated by aogen::codegen; do not edit.\n";
         g += "// The variant's axes (aogen::defines):\n";
-        for (const define& d : defines(v, pass)) g += "#define " + d.name + (d.value.empty() ? "" : " " + d.value) + "\n";
+        for (const define& d : p.defines) g += "#define " + d.name + (d.value.empty() ? "" : " " + d.value) + "\n";
         if (o.diagnostics) g += "// Raw values stored before the guard (codegen::options::diagnostics):\n#define AO_DIAGNOSTICS\n";
         g += "// Bindings, descriptor set 0:\n";
-        for (const resource& r : s.resources)
-            g += "#define AO_BINDING_" + detail::upper(r.name) + " " + std::to_string(r.binding) + "\n";
-        if (stage == shader_stage::compute) {
+        for (const resource& r : p.resources)
+            g += "#define AO_BINDING_" + upper(r.name) + " " + std::to_string(r.binding) + "\n";
+        if (p.stage == shader_stage::compute) {
             g += "// The output image's format (codegen::options):\n";
             g += "#define AO_OUTPUT_FORMAT " + o.output_format + "\n";
         }
-        const std::vector<define> c = constants(v, pass);
-        if (!c.empty()) g += "// Constants from aogen/params.hpp:\n";
-        for (const define& d : c) g += "#define " + d.name + " " + d.value + "\n";
-        const layout::struct_layout block = layout::compute(uniform_block(v, pass), layout::rules::std140);
+        if (!p.constants.empty()) g += "// Constants from aogen/params.hpp:\n";
+        for (const define& d : p.constants) g += "#define " + d.name + " " + d.value + "\n";
+        const layout::struct_layout block = layout::compute(p.block, layout::rules::std140);
         g += "#line 1 \"aogen:" + block.name + "\"\n";
-        layout::declaration_options options;
-        options.set = s.resources.front().set;
-        options.binding = s.resources.front().binding;
-        options.instance = "u";
-        g += layout::declare(block, layout::language::glsl, options);
+        layout::declaration_options declared;
+        declared.set = p.resources.front().set;
+        declared.binding = p.resources.front().binding;
+        declared.instance = "u";
+        g += layout::declare(block, layout::language::glsl, declared);
         g += "#line 1 \"aogen:resources\"\n";
-        for (const resource& r : s.resources)
-            if (r.kind != resource_kind::uniform_buffer) g += detail::declaration(r);
+        for (const resource& r : p.resources)
+            if (r.kind != resource_kind::uniform_buffer) g += declaration(r);
     }
-    for (const std::string& file : s.files) {
+    for (const std::string& file : p.files) {
         std::string text = read(file);
         g += "#line 1 \"" + file + "\"\n" + text;
         if (!text.empty() && text.back() != '\n') g += "\n";
@@ -504,16 +265,40 @@ inline shader_source generate_shader(const variant& v, pass_kind pass, shader_st
     return s;
 }
 
+} // namespace detail
+
+// Every shader of a planned variant, in plan::shaders() order, templates from `read`.
+inline std::vector<shader_source> generate(const plan& p, const template_reader& read)
+{
+    std::vector<shader_source> out;
+    for (const shader_plan& s : p.shaders()) out.push_back(detail::write_shader(s, p.axes(), p.source_options(), read));
+    return out;
+}
+
+// The same with the plan's options::templates, or the embedded templates.
+inline std::vector<shader_source> generate(const plan& p)
+{
+    const template_reader& own = p.source_options().templates;
+    return generate(p, own ? own : template_reader(embedded_template));
+}
+
+// One shader of one pass, its templates read by `read`.
+inline shader_source generate_shader(const variant& v, pass_kind pass, shader_stage stage, const template_reader& read,
+                                     const options& o = {})
+{
+    const plan p = make_plan(v, o);
+    detail::require_pass(p.axes(), pass);
+    detail::require_stage(p.axes(), stage);
+    for (const shader_plan& s : p.shaders())
+        if (s.pass == pass && s.stage == stage) return detail::write_shader(s, p.axes(), o, read);
+    fail("shader", "no shader planned for this pass and stage", "valid: a pass and stage of the variant"); // unreachable
+}
+
 // Every shader of every pass of `v`, pass by pass in passes(v) order; per pass the
 // compute shader, or the vertex then the fragment shader. Templates from `read`.
 inline std::vector<shader_source> generate(const variant& v, const template_reader& read, const options& o)
 {
-    validate(v);
-    validate(o);
-    std::vector<shader_source> out;
-    for (pass_kind pass : passes(v))
-        for (shader_stage stage : stages(v)) out.push_back(generate_shader(v, pass, stage, read, o));
-    return out;
+    return generate(make_plan(v, o), read);
 }
 inline std::vector<shader_source> generate(const variant& v, const template_reader& read)
 {
@@ -541,7 +326,7 @@ inline std::vector<shader_source> generate(const variant& v, const char* templat
 // The same with options::templates, or the embedded templates.
 inline std::vector<shader_source> generate(const variant& v, const options& o)
 {
-    return generate(v, o.templates ? o.templates : template_reader(embedded_template), o);
+    return generate(make_plan(v, o));
 }
 inline std::vector<shader_source> generate(const variant& v)
 {

@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -117,8 +118,21 @@ struct variant {
 // Validation
 // ---------------------------------------------------------------------------------
 
+namespace detail {
+
+// How many times validate(variant) has run in this process. Not a feature: it lets a test
+// pin that a plan (codegen/plan.hpp) validates a variant once and nothing after it again.
+inline std::atomic<unsigned long>& validations()
+{
+    static std::atomic<unsigned long> count{0};
+    return count;
+}
+
+} // namespace detail
+
 inline void validate(const variant& v)
 {
+    ++detail::validations();
     names::require_listed(technique_names, v.tech, "technique");
     require_range("ssao samples", v.ssao_samples, ssao_params::samples_range.lo, ssao_params::samples_range.hi);
     require_range("gtao slices", v.gtao_slices, gtao_params::slices_range.lo, gtao_params::slices_range.hi);
@@ -197,9 +211,11 @@ struct define {
 
 // The #defines the templates read for one pass of `v`. Names are AO_<AXIS>_<VALUE> for
 // choices (exactly one of each group is defined) and AO_<AXIS> N for counts.
-inline std::vector<define> defines(const variant& v, pass_kind pass)
+namespace detail {
+
+// defines(v, pass) for a `v` already validated (a plan's).
+inline std::vector<define> defines_of(const variant& v, pass_kind pass)
 {
-    validate(v);
     std::vector<define> d;
     auto choice = [&d](const char* axis, const char* value) {
         std::string name = std::string("AO_") + axis + "_";
@@ -234,6 +250,14 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
         choice("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth"));
     }
     return d;
+}
+
+} // namespace detail
+
+inline std::vector<define> defines(const variant& v, pass_kind pass)
+{
+    validate(v);
+    return detail::defines_of(v, pass);
 }
 
 // ---------------------------------------------------------------------------------
@@ -310,10 +334,11 @@ inline int parse_count(const std::string& token, size_t from = 0)
 
 } // namespace detail
 
-// The canonical name: "ssao-s16-half-bilateral-gbufworld-std-persp-cs" and extras.
-inline std::string to_name(const variant& input)
+namespace detail {
+
+// to_name(v) for a `v` already validated (a plan's).
+inline std::string name_of(const variant& input)
 {
-    validate(input);
     const variant v = canonical(input);
     const variant d;
     std::string name = names::name_of(technique_names, v.tech, "technique");
@@ -334,6 +359,15 @@ inline std::string to_name(const variant& input)
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
+}
+
+} // namespace detail
+
+// The canonical name: "ssao-s16-half-bilateral-gbufworld-std-persp-cs" and extras.
+inline std::string to_name(const variant& v)
+{
+    validate(v);
+    return detail::name_of(v);
 }
 
 // Parses a name written by to_name (extras in any order, each at most once).

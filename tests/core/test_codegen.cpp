@@ -465,3 +465,59 @@ TEST_CASE("codegen: an output format not in the list is an aogen::error naming t
     }
     CHECK_NOTHROW(codegen::validate(codegen::options{}));
 }
+
+TEST_CASE("codegen: a plan validates its variant once, and generating from it never again", "[codegen][plan]")
+{
+    // Before the plan, validate(v) ran in every codegen function: 33 times per generate() of
+    // a 4-pass compute variant and 49 times for a fragment one (issue 21).
+    for (const char* name : {"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "gtao-2x3-half-denoise-recon-rev-persp-fs"}) {
+        INFO(name);
+        const variant v = variant_from_name(name);
+        const unsigned long before = aogen::detail::validations();
+        const std::vector<shader_source> direct = codegen::generate(v);
+        CHECK(aogen::detail::validations() - before == 1);
+
+        const codegen::plan p = codegen::make_plan(v);
+        const unsigned long planned = aogen::detail::validations();
+        const std::vector<shader_source> from_plan = codegen::generate(p);
+        CHECK(aogen::detail::validations() == planned);
+
+        REQUIRE(from_plan.size() == direct.size());
+        for (size_t i = 0; i < direct.size(); ++i) {
+            CHECK(from_plan[i].name == direct[i].name);
+            CHECK(from_plan[i].glsl == direct[i].glsl);
+        }
+    }
+}
+
+TEST_CASE("codegen: a plan holds what the public part functions return", "[codegen][plan]")
+{
+    for (const variant& v : broad_set()) {
+        const codegen::plan p = codegen::make_plan(v);
+        INFO(p.name());
+        CHECK(p.name() == to_name(v));
+        CHECK(p.axes() == v);
+        CHECK(p.passes() == passes(v));
+        size_t i = 0;
+        for (pass_kind pass : passes(v))
+            for (shader_stage stage : codegen::stages(v)) {
+                REQUIRE(i < p.shaders().size());
+                const codegen::shader_plan& s = p.shaders()[i++];
+                CHECK(s.pass == pass);
+                CHECK(s.stage == stage);
+                CHECK(s.files == codegen::template_files(v, pass, stage));
+                CHECK(s.resources.size() == codegen::resources(v, pass, stage).size());
+                if (stage == shader_stage::vertex) continue;
+                std::string planned, direct;
+                for (const define& d : s.defines) planned += d.name + "=" + d.value + ";";
+                for (const define& d : defines(v, pass)) direct += d.name + "=" + d.value + ";";
+                CHECK(planned == direct);
+                CHECK(s.constants.size() == codegen::constants(v, pass).size());
+                CHECK(s.block.root.name == codegen::uniform_block(v, pass).root.name);
+            }
+        CHECK(i == p.shaders().size());
+    }
+    variant bad;
+    bad.ssao_samples = 0;
+    CHECK_THAT(error_of([&] { codegen::make_plan(bad); }), Contains("ssao samples"));
+}

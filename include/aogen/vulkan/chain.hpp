@@ -79,19 +79,29 @@ using aogen::target_size;
 class chain {
 public:
     chain(context& ctx, const variant& v, const chain_options& o = {}, spirv_cache* cache = nullptr)
-        : ctx_(ctx), v_(v), passes_(ctx, v, codegen_options(o), cache)
+        : chain(ctx, codegen::make_plan(v, codegen_options(o)), cache)
     {
-        if (o.diagnostics) counter_ = std::make_unique<raw_counter>(ctx, cache);
     }
 
-    const variant& var() const { return v_; }
+    // The chain of a planned variant (its options::diagnostics decides chain_result::raw).
+    chain(context& ctx, const codegen::plan& p, spirv_cache* cache = nullptr) : chain(ctx, p, codegen::generate(p), cache) {}
+
+    // The same from generate(p)'s sources, for a caller that has them already.
+    chain(context& ctx, const codegen::plan& p, const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
+        : ctx_(ctx), plan_(p), passes_(ctx, p, sources, cache)
+    {
+        if (p.source_options().diagnostics) counter_ = std::make_unique<raw_counter>(ctx, cache);
+    }
+
+    const variant& var() const { return plan_.axes(); }
+    const codegen::plan& plan() const { return plan_; }
     const pass_pipelines& passes() const { return passes_; }
 
     // The chain bound to `g` with settings `s` (inputs_for), ready to record and dispatch.
     std::unique_ptr<bound_chain> bind(const gpu_gbuffer& g, const chain_settings& s) const
     {
-        const auto [tw, th] = target_size(v_, g.width(), g.height());
-        return std::make_unique<bound_chain>(ctx_, passes_, g, inputs_for(v_, s, tw, th), tw, th, counter_.get());
+        const auto [tw, th] = target_size(var(), g.width(), g.height());
+        return std::make_unique<bound_chain>(ctx_, passes_, g, inputs_for(var(), s, tw, th), tw, th, counter_.get());
     }
 
     // Uploads `g`, binds, runs once and reads the AO back (see the header comment).
@@ -111,7 +121,7 @@ private:
     }
 
     context& ctx_;
-    variant v_;
+    codegen::plan plan_;
     pass_pipelines passes_;
     std::unique_ptr<raw_counter> counter_; // diagnostics only
 };

@@ -90,7 +90,17 @@ class pass_pipelines {
 public:
     // The passes of variant `v`, generated with `o`.
     pass_pipelines(context& ctx, const variant& v, const codegen::options& o = {}, spirv_cache* cache = nullptr)
-        : pass_pipelines(ctx, to_name(v), v.stage, v.workgroup_x, v.workgroup_y, codegen::generate(v, o), cache)
+        : pass_pipelines(ctx, codegen::make_plan(v, o), cache)
+    {
+    }
+
+    // The passes of a planned variant.
+    pass_pipelines(context& ctx, const codegen::plan& p, spirv_cache* cache = nullptr) : pass_pipelines(ctx, p, codegen::generate(p), cache) {}
+
+    // The same from its sources, for a caller that has generated them already (the report
+    // compiles every source of a run in one batch first): `sources` must be generate(p)'s.
+    pass_pipelines(context& ctx, const codegen::plan& p, const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
+        : pass_pipelines(ctx, p.name(), p.axes().stage, p.axes().workgroup_x, p.axes().workgroup_y, require_planned(p, sources), cache)
     {
     }
 
@@ -173,6 +183,14 @@ public:
     }
 
 private:
+    static const std::vector<codegen::shader_source>& require_planned(const codegen::plan& p, const std::vector<codegen::shader_source>& sources)
+    {
+        bool same = sources.size() == p.shaders().size();
+        for (size_t i = 0; same && i < sources.size(); ++i) same = sources[i].name == p.shaders()[i].name;
+        if (!same) fail("vulkan passes of " + p.name(), "were given sources of another plan", "valid: codegen::generate(plan)'s sources");
+        return sources;
+    }
+
     static uint32_t groups(int size, int workgroup) { return static_cast<uint32_t>((size + workgroup - 1) / workgroup); }
 
     void build(const std::vector<codegen::shader_source>& sources, spirv_cache& cache)

@@ -71,8 +71,9 @@ inline std::vector<aogen::codegen::shader_source> floor_sources(const aogen::var
         return floor.empty() ? aogen::codegen::embedded_template(path) : floor;
     };
     std::vector<aogen::codegen::shader_source> out = aogen::codegen::generate(twin, read);
+    const std::string name = aogen::to_name(v);
     for (aogen::codegen::shader_source& s : out)
-        s.name = aogen::to_name(v) + ".floor." + aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass") + ".comp";
+        s.name = name + ".floor." + aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass") + ".comp";
     return out;
 }
 

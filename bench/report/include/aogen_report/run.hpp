@@ -207,10 +207,34 @@ inline clock_record clocks_of(std::vector<double> mhz)
     return c;
 }
 
-// The compiled size of each of the variant's shaders, in chain order.
-inline void count_instructions(variant_record& r, aogen::vulkan::spirv_cache& cache)
+// Every shader a run needs of one variant, planned and generated once: as shipped (timed),
+// in diagnostic form (scored) and its fetch floor (empty for twins and without floors).
+struct generated_variant {
+    aogen::codegen::plan shipped, diagnostic;
+    std::vector<aogen::codegen::shader_source> shipped_sources, diagnostic_sources, floor_sources;
+};
+
+inline generated_variant generate_variant(const aogen::variant& v, bool floor)
 {
-    for (const aogen::codegen::shader_source& s : aogen::codegen::generate(r.v)) {
+    aogen::codegen::options d;
+    d.diagnostics = true;
+    generated_variant g{aogen::codegen::make_plan(v), aogen::codegen::make_plan(v, d), {}, {}, {}};
+    g.shipped_sources = aogen::codegen::generate(g.shipped);
+    g.diagnostic_sources = aogen::codegen::generate(g.diagnostic);
+    if (floor) g.floor_sources = floor_sources(v);
+    return g;
+}
+
+// Every source of `g`, for one compile_all.
+inline void append_sources(const generated_variant& g, std::vector<aogen::codegen::shader_source>& out)
+{
+    for (const auto* list : {&g.shipped_sources, &g.diagnostic_sources, &g.floor_sources}) out.insert(out.end(), list->begin(), list->end());
+}
+
+// The compiled size of each of the variant's shaders, in chain order.
+inline void count_instructions(variant_record& r, const generated_variant& g, aogen::vulkan::spirv_cache& cache)
+{
+    for (const aogen::codegen::shader_source& s : g.shipped_sources) {
         const uint32_t n = aogen::compile::count_instructions(cache.get(s), s.name);
         r.instructions.push_back(n);
         if (s.pass == aogen::pass_kind::ao && s.stage != aogen::shader_stage::vertex) r.ao_instructions = n;
@@ -225,29 +249,16 @@ struct compiled_variant {
     std::unique_ptr<aogen::vulkan::pass_pipelines> floor; // null for twins and without floors
 };
 
-// Every shader the run needs, for one compile_all.
-inline std::vector<aogen::codegen::shader_source> sources_of(const aogen::variant& v, bool diagnostic, bool floor)
-{
-    std::vector<aogen::codegen::shader_source> out = aogen::codegen::generate(v);
-    aogen::codegen::options d;
-    d.diagnostics = true;
-    if (diagnostic)
-        for (aogen::codegen::shader_source& s : aogen::codegen::generate(v, d)) out.push_back(std::move(s));
-    if (floor)
-        for (aogen::codegen::shader_source& s : floor_sources(v)) out.push_back(std::move(s));
-    return out;
-}
-
-inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const aogen::variant& v, bool floor, aogen::vulkan::spirv_cache& cache)
+inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const generated_variant& g, aogen::vulkan::spirv_cache& cache)
 {
     compiled_variant c;
-    c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, v, aogen::vulkan::chain_options{}, &cache);
-    if (v.stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
-        c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, v, aogen::vulkan::chain_options{true}, &cache);
-    if (floor) {
-        const aogen::variant f = floor_variant(v);
-        c.floor = std::make_unique<aogen::vulkan::pass_pipelines>(ctx, "the fetch floor of " + aogen::to_name(v), f.stage, f.workgroup_x,
-                                                                  f.workgroup_y, floor_sources(v), &cache);
+    c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, g.shipped, g.shipped_sources, &cache);
+    if (g.shipped.axes().stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
+        c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, g.diagnostic, g.diagnostic_sources, &cache);
+    if (!g.floor_sources.empty()) {
+        const aogen::variant f = floor_variant(g.shipped.axes());
+        c.floor = std::make_unique<aogen::vulkan::pass_pipelines>(ctx, "the fetch floor of " + g.shipped.name(), f.stage, f.workgroup_x,
+                                                                  f.workgroup_y, g.floor_sources, &cache);
     }
     return c;
 }
@@ -506,21 +517,22 @@ inline report_data run_report(const report_settings& settings)
     const auto compile_start = clock::now();
     settings.progress("compiling " + std::to_string(out.variants.size() + out.twins.size()) + " variants (as shipped, for diagnostics" +
                       (settings.fetch_floor ? ", fetch floors" : "") + ")");
+    std::vector<detail::generated_variant> generated, generated_twins;
+    for (const variant_record& r : out.variants) generated.push_back(detail::generate_variant(r.v, settings.fetch_floor));
+    for (const variant_record& r : out.twins) generated_twins.push_back(detail::generate_variant(r.v, false));
     aogen::vulkan::spirv_cache cache;
     std::vector<aogen::codegen::shader_source> sources;
-    for (const variant_record& r : out.variants)
-        for (aogen::codegen::shader_source& s : detail::sources_of(r.v, true, settings.fetch_floor)) sources.push_back(std::move(s));
-    for (const variant_record& r : out.twins)
-        for (aogen::codegen::shader_source& s : detail::sources_of(r.v, true, false)) sources.push_back(std::move(s));
+    for (const auto* list : {&generated, &generated_twins})
+        for (const detail::generated_variant& g : *list) detail::append_sources(g, sources);
     cache.compile_all(sources);
     std::vector<detail::compiled_variant> compiled, compiled_twins;
-    for (variant_record& r : out.variants) {
-        detail::count_instructions(r, cache);
-        compiled.push_back(detail::compile_variant(ctx, r.v, settings.fetch_floor, cache));
+    for (size_t i = 0; i < out.variants.size(); ++i) {
+        detail::count_instructions(out.variants[i], generated[i], cache);
+        compiled.push_back(detail::compile_variant(ctx, generated[i], cache));
     }
-    for (variant_record& r : out.twins) {
-        detail::count_instructions(r, cache);
-        compiled_twins.push_back(detail::compile_variant(ctx, r.v, false, cache));
+    for (size_t i = 0; i < out.twins.size(); ++i) {
+        detail::count_instructions(out.twins[i], generated_twins[i], cache);
+        compiled_twins.push_back(detail::compile_variant(ctx, generated_twins[i], cache));
     }
     out.phases.compile = detail::seconds_since(compile_start);
 

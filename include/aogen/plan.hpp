@@ -1,0 +1,370 @@
+// aogen/plan.hpp — a variant planned once: validated, canonical, and what each shader is made of.
+//
+// WHAT
+//   make_plan(v, o) validates a variant and the codegen options once, puts the variant in
+//   canonical form and works out everything its shaders are made of: the canonical name,
+//   the passes, and per shader (a pass's compute shader, or its vertex and fragment shaders)
+//   the #defines, the descriptors, the template files, the constants from params.hpp and the
+//   uniform block. Only make_plan makes a plan, so holding one means holding a valid variant:
+//   codegen::generate(plan), the Vulkan pipelines and the report take the plan and never
+//   validate again (a variant used to be validated 33 times per generate() of a 4-pass
+//   compute variant; now once — tests/core/test_codegen.cpp counts).
+//
+//   The parts one level down stay public for a caller that wants one of them —
+//   uniform_block(v, pass), resources(v, pass, stage, o), template_files(v, pass, stage),
+//   constants(v, pass), aogen::defines(v, pass) — and each validates what it is given, as
+//   every public entry point does. A plan's shaders hold exactly what these return.
+//
+// RESOURCES (descriptor set 0 / bind group 0; aogen/bindings.hpp's table)
+//   resources(v, pass, stage, o) lists what one shader binds, each with its role, kind,
+//   binding and GLSL name; codegen declares them from that list. The names the templates use:
+//     u (the uniform block: SsaoUniforms, GtaoUniforms, VbaoUniforms or BlurUniforms),
+//     u_depth, u_normals (G-buffer variants), u_noise, u_ao_input (filter passes),
+//     u_output (compute passes), u_raw (options::diagnostics)
+//   options::model picks the binding model (bindings.hpp):
+//     vulkan   every texture a combined sampler2D (what GLSL, ESSL, HLSL and MSL are made from)
+//     webgpu   textures as texture2D; a gathered one (u_depth, u_ao_input) with a sampler at
+//              the next binding. What the WGSL target is made from (aogen/wgsl.hpp).
+//
+// OPTIONS (codegen::options; the defaults are what generate(v) uses)
+//   output_format   the format qualifier of compute passes' output image:
+//                     r8       (default) one 8-bit unorm channel: Vulkan, desktop GL, D3D, Metal
+//                     rgba8    for OpenGL ES 3.1 and WebGPU (neither has an r8 storage
+//                              format): the AO is in .r, written as (ao, 0, 0, 1)
+//                     r32f, rgba16f   float targets
+//                   Anything else is an aogen::error naming these four. Every compute pass of
+//                   a variant gets the same format; the filter passes read the AO pass's .r.
+//   diagnostics     true: every pass also stores the value it computed before ao_finalize's
+//                   guard (NaN and out-of-range values included) to an r32f image `raw` —
+//                   for a harness that checks the numerics, not for a renderer.
+//   model           the binding model (RESOURCES).
+//   templates       empty (default): the embedded templates. A reader (directory_reader(dir)
+//                   in codegen.hpp, or any function from path to text) replaces them wherever
+//                   the options travel, so a template under development, or a test's planted
+//                   fault in one (tests/mutants/), runs through every consumer unchanged.
+//
+// USAGE
+//     #include <aogen/plan.hpp>
+//     const aogen::codegen::plan p = aogen::codegen::make_plan(v);   // aogen::error if invalid
+//     p.name();                                     // "ssao-s16-half-bilateral-gbufworld-std-persp-cs"
+//     for (const aogen::codegen::shader_plan& s : p.shaders())
+//         // s.pass, s.stage, s.name ("<variant>.ao.comp"), s.defines, s.resources, s.files, ...
+//     aogen::codegen::generate(p);                  // the GLSL (codegen.hpp)
+//
+// ERRORS
+//   aogen::error: an invalid variant (validate()), an output format not in the list above,
+//   a pass or stage the variant does not have.
+#pragma once
+
+#include "bindings.hpp"
+#include "error.hpp"
+#include "layout.hpp"
+#include "names.hpp"
+#include "params.hpp"
+#include "stages.hpp"
+#include "uniforms.hpp"
+#include "variant.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace aogen::codegen {
+
+using aogen::shader_stage; // stages.hpp, shared with the compiler
+using aogen::file_extension;
+
+// ---------------------------------------------------------------------------------
+// Options
+// ---------------------------------------------------------------------------------
+
+// Reads a template by its path relative to the templates directory ("common/core.glsl").
+using template_reader = std::function<std::string(const std::string& path)>;
+
+// How the sources are generated, beyond the variant (see OPTIONS above).
+struct options {
+    std::string output_format = "r8"; // compute passes' output image: r8, rgba8, r32f, rgba16f
+    bool diagnostics = false;         // every pass also stores its raw, unguarded value
+    binding_model model = binding_model::vulkan; // combined samplers, or WebGPU's separate ones
+    template_reader templates;        // where the templates are read; empty: the embedded ones
+};
+
+// The output formats options::output_format accepts, in the order error messages list them.
+inline constexpr std::array<std::string_view, 4> output_formats{{"r8", "rgba8", "r32f", "rgba16f"}};
+
+// aogen::error unless every option is valid.
+inline void validate(const options& o)
+{
+    names::require_listed(binding_model_names, o.model, "binding model");
+    const bool known = std::find(output_formats.begin(), output_formats.end(), o.output_format) != output_formats.end();
+    std::string valid;
+    for (std::string_view f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f);
+    if (!known) fail("output format", quote(o.output_format) + " is not a storage image format aogen writes", "valid: " + valid);
+    // Core WebGPU's storage textures have no one-channel 8-bit format (r8unorm).
+    if (o.model == binding_model::webgpu && o.output_format == "r8")
+        fail("output format", "r8 is not a storage texture format of core WebGPU", "valid: rgba8, r32f, rgba16f");
+}
+
+// ---------------------------------------------------------------------------------
+// Resources
+// ---------------------------------------------------------------------------------
+
+enum class resource_kind { uniform_buffer, combined_image_sampler, sampled_image, sampler, storage_image };
+inline constexpr std::array<enum_name<resource_kind>, 5> resource_kind_names{{
+    {resource_kind::uniform_buffer, "uniform_buffer"},
+    {resource_kind::combined_image_sampler, "combined_image_sampler"},
+    {resource_kind::sampled_image, "sampled_image"},
+    {resource_kind::sampler, "sampler"},
+    {resource_kind::storage_image, "storage_image"},
+}};
+static_assert(names::distinct(resource_kind_names));
+
+inline const char* to_name(resource_kind k) { return names::name_of(resource_kind_names, k, "resource kind"); }
+
+// One descriptor a shader declares (RESOURCES). `name` is its role's name ("depth"), or
+// "<role>_sampler" for the sampler WebGPU pairs with a gathered texture; codegen also
+// writes its binding as #define AO_BINDING_<NAME>.
+struct resource {
+    uint32_t set = 0;
+    uint32_t binding = 0;
+    resource_kind kind = resource_kind::combined_image_sampler;
+    std::string name;
+    std::string block;  // uniform buffers: the block's type name (SsaoUniforms, ...)
+    std::string format; // storage images: the format qualifier (options::output_format)
+    resource_role role = resource_role::depth;
+};
+
+// The stages a variant's pass runs as: compute, or vertex + fragment.
+inline std::vector<shader_stage> stages(const variant& v)
+{
+    names::require_listed(pipeline_stage_names, v.stage, "stage");
+    if (v.stage == pipeline_stage::compute) return {shader_stage::compute};
+    return {shader_stage::vertex, shader_stage::fragment};
+}
+
+namespace detail {
+
+inline void require_stage(const variant& v, shader_stage stage)
+{
+    names::require_listed(shader_stage_names, stage, "shader stage");
+    const bool ok = v.stage == pipeline_stage::compute ? stage == shader_stage::compute
+                                                       : stage != shader_stage::compute;
+    if (!ok)
+        fail("shader stage", std::string(to_name(stage)) + " is not a stage of a " +
+                                 names::name_of(pipeline_stage_names, v.stage, "stage") + " variant",
+             v.stage == pipeline_stage::compute ? "valid: compute" : "valid: vertex, fragment");
+}
+
+inline void require_pass(const variant& v, pass_kind pass)
+{
+    names::require_listed(pass_kind_names, pass, "pass");
+    for (pass_kind p : passes(v))
+        if (p == pass) return;
+    std::string valid;
+    for (pass_kind p : passes(v)) valid += (valid.empty() ? "" : ", ") + std::string(names::name_of(pass_kind_names, p, "pass"));
+    fail("pass", std::string(names::name_of(pass_kind_names, pass, "pass")) + " is not a pass of " + aogen::to_name(v),
+         "valid: " + valid);
+}
+
+// A float as a GLSL literal that reads back to the same float: the shortest round-trip
+// digits, with ".0" added when they would otherwise read as an int.
+inline std::string glsl_float(float value)
+{
+    std::string s = format_number(value);
+    if (s.find_first_of(".en") == std::string::npos) s += ".0";
+    return s;
+}
+
+// The parts of one shader, for a variant, pass, stage and options already validated.
+
+inline layout::block_desc uniform_block_of(const variant& v, pass_kind pass)
+{
+    if (pass != pass_kind::ao) return uniforms::blur_block();
+    if (v.tech == technique::gtao) return uniforms::gtao_block();
+    if (v.tech == technique::vbao) return uniforms::vbao_block();
+    return uniforms::ssao_block(v.ssao_samples); // the point-cloud fallback too
+}
+
+inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shader_stage stage, const options& o)
+{
+    if (stage == shader_stage::vertex) return {};
+    using k = resource_kind;
+    const pass_family family = family_of(pass);
+    std::vector<resource> r;
+    for (resource_role role : pass_roles(family)) {
+        const bool declared = role == resource_role::normals  ? v.normals != normal_source::reconstructed
+                              : role == resource_role::output ? stage == shader_stage::compute
+                              : role == resource_role::raw    ? o.diagnostics
+                                                              : true;
+        if (!declared) continue;
+        const uint32_t binding = binding_of(family, role, o.model);
+        const std::string name = aogen::to_name(role);
+        if (role == resource_role::uniforms) r.push_back({0, binding, k::uniform_buffer, name, uniform_block_of(v, pass).root.name, "", role});
+        else if (role == resource_role::output) r.push_back({0, binding, k::storage_image, name, "", o.output_format, role});
+        else if (role == resource_role::raw) r.push_back({0, binding, k::storage_image, name, "", "r32f", role});
+        else if (o.model == binding_model::vulkan) r.push_back({0, binding, k::combined_image_sampler, name, "", "", role});
+        else {
+            r.push_back({0, binding, k::sampled_image, name, "", "", role});
+            if (auto s = sampler_binding_of(family, role, o.model)) r.push_back({0, *s, k::sampler, name + "_sampler", "", "", role});
+        }
+    }
+    return r;
+}
+
+inline std::vector<std::string> template_files_of(const variant& v, pass_kind pass, shader_stage stage)
+{
+    if (stage == shader_stage::vertex) return {"common/fullscreen_vertex.glsl"};
+    std::vector<std::string> files{"common/core.glsl", "common/depth.glsl"};
+    switch (pass) {
+    case pass_kind::ao:
+        files.insert(files.end(), {"common/normals.glsl", "common/noise.glsl"});
+        if (v.tech == technique::gtao) {
+            files.insert(files.end(), {"common/slices.glsl", "gtao.glsl"});
+        } else if (v.tech == technique::vbao) {
+            files.insert(files.end(), {"common/slices.glsl", "vbao.glsl"});
+        } else {
+            if (v.point_cloud_fallback) files.push_back("ssao_point_cloud.glsl");
+            files.push_back("ssao.glsl");
+        }
+        break;
+    case pass_kind::blur_x:
+    case pass_kind::blur_y: files.push_back("blur_bilateral.glsl"); break;
+    case pass_kind::blur_box: files.push_back("blur_box.glsl"); break;
+    case pass_kind::blur_denoise: files.push_back("blur_denoise.glsl"); break;
+    case pass_kind::upsample: files.push_back("upsample.glsl"); break;
+    }
+    files.push_back(stage == shader_stage::compute ? "entry_compute.glsl" : "entry_fragment.glsl");
+    return files;
+}
+
+inline std::vector<define> constants_of(const variant& v, pass_kind pass)
+{
+    std::vector<define> c;
+    if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
+        for (size_t i = 0; i < blur_params::bilateral_weights.size(); ++i)
+            c.push_back({"AO_BLUR_WEIGHT_" + std::to_string(i), glsl_float(blur_params::bilateral_weights[i])});
+    } else if (pass == pass_kind::blur_box) {
+        c.push_back({"AO_BLUR_BOX_SIZE", std::to_string(blur_params::box_size)});
+    } else if (pass == pass_kind::blur_denoise) {
+        c.push_back({"AO_DENOISE_RADIUS", std::to_string(blur_params::denoise_radius)});
+        for (size_t i = 0; i < blur_params::denoise_weights.size(); ++i)
+            c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), glsl_float(blur_params::denoise_weights[i])});
+    } else if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
+        c.push_back({"AO_PC_BACKGROUND_DEPTH", glsl_float(point_cloud::background_depth)});
+        c.push_back({"AO_PC_SAME_DEPTH", glsl_float(point_cloud::same_depth_tolerance)});
+        c.push_back({"AO_PC_CAVITY_THRESHOLD", glsl_float(point_cloud::cavity_threshold)});
+        c.push_back({"AO_PC_RING_PIXELS", std::to_string(point_cloud::ring_pixels)});
+    }
+    return c;
+}
+
+} // namespace detail
+
+// The uniform block of a variant's pass (aogen/uniforms.hpp).
+inline layout::block_desc uniform_block(const variant& v, pass_kind pass)
+{
+    validate(v);
+    detail::require_pass(v, pass);
+    return detail::uniform_block_of(v, pass);
+}
+
+// The descriptors one shader of a variant's pass declares, by binding (bindings.hpp).
+inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_stage stage, const options& o = {})
+{
+    validate(v);
+    validate(o);
+    detail::require_pass(v, pass);
+    detail::require_stage(v, stage);
+    return detail::resources_of(v, pass, stage, o);
+}
+
+// The template files of one shader, in the order they are concatenated.
+inline std::vector<std::string> template_files(const variant& v, pass_kind pass, shader_stage stage)
+{
+    validate(v);
+    detail::require_pass(v, pass);
+    detail::require_stage(v, stage);
+    return detail::template_files_of(v, pass, stage);
+}
+
+// The constants a pass's templates take from aogen's headers, as (name, GLSL value).
+inline std::vector<define> constants(const variant& v, pass_kind pass)
+{
+    validate(v);
+    detail::require_pass(v, pass);
+    return detail::constants_of(v, pass);
+}
+
+// ---------------------------------------------------------------------------------
+// The plan
+// ---------------------------------------------------------------------------------
+
+// What one shader of a variant is made of. A vertex shader (fragment variants' fullscreen
+// triangle) has files only: no defines, constants, resources or block of its own.
+struct shader_plan {
+    pass_kind pass = pass_kind::ao;
+    shader_stage stage = shader_stage::compute;
+    std::string name;                // "<variant name>.<pass>.<comp|vert|frag>"
+    std::vector<define> defines;     // aogen::defines(v, pass)
+    std::vector<resource> resources; // its descriptors (set 0), by binding
+    std::vector<define> constants;   // from params.hpp (constants(v, pass))
+    std::vector<std::string> files;  // the template files, in order
+    layout::block_desc block;        // the uniform block (uniform_block(v, pass))
+};
+
+class plan;
+plan make_plan(const variant& v, const options& o = {});
+
+// A variant planned once (see WHAT). Read-only; make_plan is the only way to make one.
+class plan {
+public:
+    const variant& axes() const { return axes_; }              // the variant, canonical
+    const std::string& name() const { return name_; }          // its canonical name
+    const options& source_options() const { return options_; } // what the sources are generated with
+    const std::vector<pass_kind>& passes() const { return passes_; }
+    // Per pass in passes() order: the compute shader, or the vertex then the fragment shader.
+    const std::vector<shader_plan>& shaders() const { return shaders_; }
+
+private:
+    plan() = default;
+    friend plan make_plan(const variant& v, const options& o);
+    variant axes_;
+    std::string name_;
+    options options_;
+    std::vector<pass_kind> passes_;
+    std::vector<shader_plan> shaders_;
+};
+
+// Validates `v` and `o` (aogen::error naming what is wrong) and plans every shader.
+inline plan make_plan(const variant& v, const options& o)
+{
+    validate(v);
+    validate(o);
+    plan p;
+    p.axes_ = canonical(v);
+    p.name_ = aogen::detail::name_of(p.axes_);
+    p.options_ = o;
+    p.passes_ = aogen::passes(p.axes_);
+    for (pass_kind pass : p.passes_)
+        for (shader_stage stage : stages(p.axes_)) {
+            shader_plan s;
+            s.pass = pass;
+            s.stage = stage;
+            s.name = p.name_ + "." + names::name_of(pass_kind_names, pass, "pass") + "." + file_extension(stage);
+            s.files = detail::template_files_of(p.axes_, pass, stage);
+            if (stage != shader_stage::vertex) {
+                s.defines = aogen::detail::defines_of(p.axes_, pass);
+                s.resources = detail::resources_of(p.axes_, pass, stage, o);
+                s.constants = detail::constants_of(p.axes_, pass);
+                s.block = detail::uniform_block_of(p.axes_, pass);
+            }
+            p.shaders_.push_back(std::move(s));
+        }
+    return p;
+}
+
+} // namespace aogen::codegen
