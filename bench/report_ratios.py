@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """What the settings cost, as ratios within one report run, and how far from their floors.
 
-    python3 bench/report_ratios.py out/report/results.json [--other other/results.json]
+    python3 report_ratios.py out/report/results.json [--other other/results.json]
 
 Reads an aogen_report results.json and prints the tables BENCHMARKS.md records:
   - the Pareto front by calibrated error (fastest first);

@@ -5,7 +5,7 @@
 # aogen::codegen::embedded), path relative to <template dir> with '/', sorted, text in C++
 # raw string literals. aogen/codegen.hpp includes the library's, so generate(variant)
 # needs no template files at run time and an installed package carries its templates; the
-# report embeds its fetch-floor kernels (bench/report/floor/) the same way.
+# report embeds its fetch-floor kernels (report/floor/) the same way.
 #
 # Runs at configure time. Every template is a configure dependency (and the glob is
 # CONFIGURE_DEPENDS), so editing, adding or removing a template re-runs CMake on the next

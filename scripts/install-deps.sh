@@ -15,8 +15,8 @@ packages=(
   glslang-dev glslang-tools   # GLSL -> SPIR-V, and the reflection oracle
   spirv-tools                 # validator and optimizer
   spirv-cross libspirv-cross-c-shared-dev   # SPIR-V -> GLSL/ESSL/HLSL/MSL
-  libembree-dev               # Embree 3: the ray-traced ground truth (bench/truth)
-  libassimp-dev assimp-testmodels   # mesh scenes (bench/scenes) and the real meshes they use
+  libembree-dev               # Embree 3: the ray-traced ground truth (truth)
+  libassimp-dev assimp-testmodels   # mesh scenes (scenes) and the real meshes they use
   libstb-dev                  # PNG image strips of the report (stb_image_write)
   python3-matplotlib          # the report's error-against-time plot
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers   # the Vulkan harness (lavapipe)

@@ -8,4 +8,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh aogen_report
-build/bench/report/aogen_report "$@"
+build/report/aogen_report "$@"

@@ -8,11 +8,11 @@ set -euo pipefail
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage/bin" "$stage/lib" .carry
-for b in bench/report/aogen_report bench/report/aogen_clock_probe tests/aogen_vulkan_tests; do
+for b in report/aogen_report report/aogen_clock_probe tests/aogen_vulkan_tests; do
   cp "build/$b" "$stage/bin/" && strip "$stage/bin/$(basename "$b")"
 done
 for l in libembree3 libassimp libtbb libdraco libminizip; do
-  cp -L "$(ldd build/bench/report/aogen_report | awk -v l="$l" '$1 ~ "^"l"\\." {print $3}')" "$stage/lib/"
+  cp -L "$(ldd build/report/aogen_report | awk -v l="$l" '$1 ~ "^"l"\\." {print $3}')" "$stage/lib/"
 done
 models=/usr/share/assimp/models
 for m in Collada/teapots.DAE glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb TER/RealisticTerrain_Large.ter; do

@@ -1,4 +1,4 @@
-# bench/device/setup.sh — sourced by the H200 scripts here, from the repository root: unpacks
+# bench/device/setup.sh — sourced by the H200 run scripts (bench/runs/), from the repository root: unpacks
 # what the device tool carried (carry [".gl", ".carry"]) and sets B (the binaries), L (the log)
 # and /tmp/fakepy (a stand-in plotter: the image has no matplotlib, the PNG is not used).
 # What to carry: build here, pack bin/ (aogen_report, aogen_vulkan_tests), lib/ (what ldd

@@ -63,6 +63,14 @@ inline std::pair<int, int> output_size(const variant& v, int w, int h)
     return has_upsample_pass(v) ? std::pair<int, int>{w, h} : target_size(v, w, h);
 }
 
+// How many screen pixels one output pixel of `v` covers along each axis: 2 for a
+// half-resolution chain without the upsample pass, 1 otherwise. A harness upsamples the
+// output by this factor to compare it with a screen-sized reference.
+inline int output_scale(const variant& v)
+{
+    return v.half_resolution && !has_upsample_pass(v) ? 2 : 1;
+}
+
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
 // target_w × target_h: each pass's std140 uniform block, the noise tile the params name
 // (4×4 for GTAO and VBAO) and, for SSAO, the kernel inside its block.

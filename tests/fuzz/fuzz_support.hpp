@@ -9,7 +9,7 @@
 // WHY these outcomes
 //   Every reader rejects bad input by throwing aogen::error, whose message names the file, the
 //   field, the value and what is valid (aogen/error.hpp). The programs also print any other
-//   std::exception as one line and exit non-zero (generator/main.cpp, bench/report/main.cpp),
+//   std::exception as one line and exit non-zero (generator/main.cpp, report/main.cpp),
 //   so an nlohmann::json::type_error escaping a reader is a poor message, not a failure.
 //   Everything else is a finding, and libFuzzer saves the input that caused it: a crash or a
 //   sanitizer report (ASan, UBSan: built with -fno-sanitize-recover, so the first report

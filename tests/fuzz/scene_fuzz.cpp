@@ -1,5 +1,5 @@
 // tests/fuzz/scene_fuzz.cpp — libFuzzer target: the scene files of the report,
-// scenes::read_scene (bench/scenes/include/aogen_scenes/scene.hpp).
+// scenes::read_scene (scenes/include/aogen_scenes/scene.hpp).
 //
 // Each input is the text of a SCENE.json, read as "scene.json". A scene that parses (and
 // so passed validate) gives the camera matrices the G-buffer and the AO passes are drawn

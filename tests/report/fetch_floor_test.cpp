@@ -1,4 +1,4 @@
-// The fetch floor (bench/report/floor/, aogen_report/fetch_floor.hpp): for every variant
+// The fetch floor (report/floor/, aogen_report/fetch_floor.hpp): for every variant
 // of the default matrix, its floor is a list of compute shaders that glslang compiles and
 // spirv-val accepts, one per pass of the variant, declaring exactly the variant's compute
 // resources (so it binds like the variant), and each smaller than the pass it stands in

@@ -1,4 +1,4 @@
-// The reference tracer (bench/truth) against DESIGN.md's closed forms, to within 0.005,
+// The reference tracer (truth) against DESIGN.md's closed forms, to within 0.005,
 // with its reported standard error below 0.005 too. Each configuration is traced where it
 // was drawn, at the world's zero, and moved 10⁶ and 10⁷ away from it (geometry and query
 // points), by a tracer whose origin, a camera's eye, is a few units from the configuration:

@@ -2,7 +2,7 @@
 // half of one, or half of a set.
 //
 // Shared by the tools that write files: the `aogen` command line (generator/) and the
-// report (bench/report).
+// report (report).
 //
 // READING
 //   read_file(path): the bytes of a regular file (or a stream: a FIFO, /dev/stdin).

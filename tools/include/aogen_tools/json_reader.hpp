@@ -1,7 +1,7 @@
 // aogen_tools/json_reader.hpp — reading JSON input files with errors that say where.
 //
 // Shared by every tool that reads JSON: the `aogen` command line (struct files, variant
-// specs), the scene files of bench/scenes and the report. A json_reader is a view of one
+// specs), the scene files of scenes and the report. A json_reader is a view of one
 // JSON value plus its path in the file ("params.json.members[2].count"), so every
 // complaint names the file, the field, the value and what would be valid. Unknown keys
 // are errors too: a typo ("cout") should not be silently ignored.

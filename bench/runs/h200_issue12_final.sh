@@ -7,6 +7,6 @@
 cd "$(dirname "$0")/../.."
 . bench/device/setup.sh
 nvidia-smi --query-gpu=name,clocks.sm,clocks.max.sm,power.draw --format=csv >> $L 2>&1
-echo "== final 1080p" >> $L; timeout 560 $B/aogen_report --size 1920x1080 --rays 1024 --scenes room,stairs,engine,teapots,terrain --variants bench/device/h200_issue12_final.json --no-feature-saving --python /tmp/fakepy --out /tmp/f1080 >> $L 2>&1; echo "rc $?" >> $L
+echo "== final 1080p" >> $L; timeout 560 $B/aogen_report --size 1920x1080 --rays 1024 --scenes room,stairs,engine,teapots,terrain --variants bench/runs/h200_issue12_final.json --no-feature-saving --python /tmp/fakepy --out /tmp/f1080 >> $L 2>&1; echo "rc $?" >> $L
 nvidia-smi --query-gpu=name,clocks.sm,clocks.max.sm,power.draw --format=csv >> $L 2>&1
 cd /tmp && tar -czf $OUT/reports.tar.gz f1080/results.json f1080/report.md 2>>$L

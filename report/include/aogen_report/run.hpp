@@ -7,7 +7,8 @@
 //        (codegen::options::diagnostics) and its fetch floor (fetch_floor.hpp) — once, on
 //        all cores (vulkan::spirv_cache), then one set of pipelines per variant for the
 //        whole run, on one Vulkan device;
-//     2. per scene:
+//     2. per scene, on its scene_bench (scene_bench.hpp, the harness the suite and the
+//        tuner share):
 //        a. the G-buffer (Embree ray cast) and the reference AO image (reference.hpp,
 //           grid² rays per pixel, with its Monte-Carlo noise); the G-buffer uploaded once
 //           per depth convention and normal space a variant asks for;
@@ -49,6 +50,7 @@
 #include "metrics.hpp"
 #include "pareto.hpp"
 #include "reference.hpp"
+#include "scene_bench.hpp"
 #include "settings.hpp"
 
 #include <aogen/parallel.hpp>
@@ -263,46 +265,6 @@ inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const gener
     return c;
 }
 
-// A scene's G-buffers: on the host, ray-cast on first use, one per depth convention and
-// normal space a variant asks for; and uploaded, once each, for every chain to share.
-class gbuffer_cache {
-public:
-    gbuffer_cache(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, const aogen::truth::scene& t) : ctx_(ctx), scene_(s), tracer_(t) {}
-
-    const aogen::vulkan::gbuffer& host(const aogen::variant& v) { return entry(v).host; }
-    const aogen::vulkan::gpu_gbuffer& gpu(const aogen::variant& v)
-    {
-        entry_type& e = entry(v);
-        if (!e.gpu) e.gpu = std::make_unique<aogen::vulkan::gpu_gbuffer>(ctx_, e.host);
-        return *e.gpu;
-    }
-
-private:
-    struct entry_type {
-        aogen::vulkan::gbuffer host;
-        std::unique_ptr<aogen::vulkan::gpu_gbuffer> gpu;
-    };
-    entry_type& entry(const aogen::variant& v)
-    {
-        const aogen::scenes::normal_space space =
-            v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
-        const int key = int(v.depth) * 4 + int(space);
-        auto it = cache_.find(key);
-        if (it != cache_.end()) return it->second;
-        aogen::scenes::gbuffer_options o;
-        o.use_scene_normals = false;
-        o.normals = space;
-        o.face_camera = false; // as the scene's renderer stores them (the reference's face the camera)
-        const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(for_variant(scene_, v), tracer_, o);
-        return cache_.emplace(key, entry_type{aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(g), nullptr}).first->second;
-    }
-
-    aogen::vulkan::context& ctx_;
-    const aogen::scenes::scene& scene_;
-    const aogen::truth::scene& tracer_;
-    std::map<int, entry_type> cache_;
-};
-
 // What a record needs of its scene to run, or why it cannot.
 inline std::string why_not(const variant_record& r, const scene_record& s, bool twin)
 {
@@ -312,14 +274,13 @@ inline std::string why_not(const variant_record& r, const scene_record& s, bool 
 
 // Scores `c` on one scene: runs its diagnostic build once (the shipped one where there is
 // none), reads the AO back, counts raw values; metrics follow in finish_scoring().
-inline run_record score(const compiled_variant& c, gbuffer_cache& gbuffers, const scene_record& s)
+inline run_record score(const compiled_variant& c, scene_bench& bench)
 {
     run_record r;
     const aogen::vulkan::chain& chain = c.diagnostic ? *c.diagnostic : *c.shipped;
-    const aogen::vulkan::gpu_gbuffer& g = gbuffers.gpu(chain.var());
-    const aogen::vulkan::chain_result out = chain.bind(g, default_settings(chain.var(), s.scene))->run_once();
-    r.raw = out.raw;
-    r.ao = ao_readback::of(out, out.width == g.width() ? 1 : 2);
+    const bench_run out = bench.run(chain, default_settings(chain.var(), bench.scene()));
+    r.raw = out.out.raw;
+    r.ao = ao_readback::of(out.out, out.scale);
     return r;
 }
 
@@ -462,17 +423,19 @@ inline double seconds_since(std::chrono::steady_clock::time_point t)
 
 } // namespace detail
 
-// Scene `s` at the report's resolution, with its G-buffer and reference traced.
-inline scene_record prepare_scene(aogen::scenes::scene s, const aogen::truth::scene& tracer, const report_settings& settings)
+// Scene `s` at the report's resolution.
+inline aogen::scenes::scene sized(aogen::scenes::scene s, const report_settings& settings)
 {
     if (settings.width > 0) s.camera.width = settings.width, s.camera.height = settings.height;
+    return s;
+}
+
+// What the report keeps of a scene on the bench: the scene as run and its reference.
+inline scene_record record_of(const scene_bench& bench)
+{
     scene_record r;
-    r.scene = s;
-    aogen::scenes::gbuffer_options world;
-    world.use_scene_normals = false;
-    world.normals = aogen::scenes::normal_space::world;
-    const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(s, tracer, world);
-    r.truth = trace_reference(s, tracer, g, settings.grid);
+    r.scene = bench.scene();
+    r.truth = bench.truth();
     double sum = 0;
     for (size_t i = 0; i < r.truth.ao.size(); ++i)
         if (r.truth.valid[i]) sum += r.truth.ao[i], ++r.valid_pixels;
@@ -541,14 +504,13 @@ inline report_data run_report(const report_settings& settings)
         const std::string tag = "[scene " + std::to_string(si + 1) + "/" + std::to_string(settings.scenes.size()) + "] " + settings.scenes[si].name;
         settings.progress(tag + ": G-buffer and reference (" + std::to_string(settings.grid * settings.grid) + " rays per pixel)");
         const auto trace_start = clock::now();
-        const std::unique_ptr<aogen::truth::scene> tracer = aogen::scenes::make_tracer(settings.scenes[si]); // camera-relative
-        out.scenes.push_back(prepare_scene(settings.scenes[si], *tracer, settings));
+        scene_bench bench(ctx, sized(settings.scenes[si], settings), settings.grid);
+        out.scenes.push_back(record_of(bench));
         if (const size_t left_out = out.scenes.back().truth.untrusted)
             settings.progress(tag + ": " + std::to_string(left_out) + " pixels left out of the score: their geometry lies too far from the camera, and spans too much, " +
                               "for a reference at ao_radius " + aogen::format_number(settings.scenes[si].ao_radius) + " (rays that short are placed reliably within " +
                               aogen::format_number(aogen::truth::reliable_extent(settings.scenes[si].ao_radius)) + " of a tracer's origin)");
         const scene_record& scene = out.scenes.back();
-        detail::gbuffer_cache gbuffers(ctx, scene.scene, *tracer);
         out.phases.trace += detail::seconds_since(trace_start);
 
         // Scoring: every record that can run, once, in its diagnostic build.
@@ -561,7 +523,7 @@ inline report_data run_report(const report_settings& settings)
         for (size_t k = 0; k < records.size(); ++k) {
             variant_record& r = *records[k].first;
             const std::string skipped = detail::why_not(r, scene, k >= out.variants.size());
-            r.runs.push_back(skipped.empty() ? detail::score(*records[k].second, gbuffers, scene) : run_record{skipped});
+            r.runs.push_back(skipped.empty() ? detail::score(*records[k].second, bench) : run_record{skipped});
             if (skipped.empty()) scored.push_back(&r.runs.back()), ++out.phases.runs;
         }
         aogen::parallel_for(scored.size(), [&](size_t k) { detail::finish_scoring(*scored[k], scene); });
@@ -580,8 +542,8 @@ inline report_data run_report(const report_settings& settings)
             group.clear(), group_bytes = 0;
         };
         const auto add = [&](run_record& run, bool floor, const aogen::vulkan::pass_pipelines& passes, const aogen::variant& v) {
-            const aogen::vulkan::gpu_gbuffer& g = gbuffers.gpu(v);
-            const auto [tw, th] = aogen::vulkan::target_size(v, g.width(), g.height());
+            const aogen::vulkan::gpu_gbuffer& g = bench.gpu(v);
+            const auto [tw, th] = aogen::vulkan::target_size(v, bench.width(), bench.height());
             auto bound = std::make_unique<aogen::vulkan::bound_chain>(
                 ctx, passes, g, aogen::vulkan::inputs_for(v, default_settings(v, scene.scene), tw, th), tw, th);
             group_bytes += detail::output_bytes(*bound);

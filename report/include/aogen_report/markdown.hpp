@@ -113,7 +113,7 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
           "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
           "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median (p10–p90 likewise). "
           "*Floor* is the variant's fetch floor: its passes' texel fetches at the same positions with none of the shading "
-          "(bench/report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
+          "(report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
           "variant is bound by its memory traffic, far above it by its arithmetic. *Raw NaN/Inf* and *raw out of [0, 1]* count "
           "the values the passes computed before the guard that keeps the output finite and in range (all passes, all "
           "scenes), with how far the farthest lay outside [0, 1]; the output itself is always finite and in range. "

@@ -26,7 +26,7 @@
 //     int16 heights, so .ter files are read here, laid out as assimp's importer does: point
 //     (i, j) at (i·sx, j·sy, (base + h·height_scale/65536)·sz), z up, each cell split into
 //     the triangles (i,j)(i,j+1)(i+1,j+1) and (i,j)(i+1,j+1)(i+1,j).
-//   * assimp is optional: without it (AOGEN_SCENES_ASSIMP not defined, bench/scenes/
+//   * assimp is optional: without it (AOGEN_SCENES_ASSIMP not defined, scenes/
 //     CMakeLists.txt) every other format is an error that says to install libassimp-dev.
 //   * Rotation uses random::cos_sin_turns: exact for quarter turns and the same bits on every
 //     platform, so a mesh scene is the same geometry everywhere.

@@ -47,6 +47,7 @@
 //    "twin_window": [x, y]}           (the scene's image is the twin's from pixel (x, y) on)
 #pragma once
 
+#include "scene_bench.hpp"
 #include "settings.hpp"
 
 #include <aogen_scenes/scene.hpp>
@@ -88,12 +89,8 @@ inline std::vector<double> scale_factors()
     return k;
 }
 
-// A fault planted in the G-buffer a variant reads (not in the reference's).
-struct gbuffer_fault {
-    enum class kind { nan_depth, zero_normal } what = kind::nan_depth;
-    double u = 0.5, v = 0.5; // where, as fractions of the image (pixel floor(u·W), floor(v·H))
-};
-
+// A case's faults are planted in the G-buffer a variant reads, not in the reference's
+// (gbuffer_fault: scene_bench.hpp).
 struct stability_case {
     std::string name, about;
     aogen::scenes::scene scene, twin;

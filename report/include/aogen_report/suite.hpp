@@ -29,7 +29,7 @@
 
 #include "metrics.hpp"
 #include "reference.hpp"
-#include "run.hpp"
+#include "scene_bench.hpp"
 #include "settings.hpp"
 #include "stability.hpp"
 
@@ -133,82 +133,35 @@ private:
     std::map<std::string, std::unique_ptr<aogen::vulkan::chain>> chains_;
 };
 
-// A scene ready to run variants on: its tracer and its reference.
-struct prepared_scene {
-    aogen::scenes::scene scene;
-    std::unique_ptr<aogen::truth::scene> tracer;
-    reference truth;
-};
-
-inline prepared_scene prepare(const aogen::scenes::scene& s, int grid)
-{
-    prepared_scene p{s, aogen::scenes::make_tracer(s), {}};
-    aogen::scenes::gbuffer_options world;
-    world.use_scene_normals = false;
-    p.truth = trace_reference(s, *p.tracer, aogen::scenes::render_gbuffer(s, *p.tracer, world), grid);
-    return p;
-}
-
-// What one run read back: AO at the target's size, the full-resolution AO, raw counts, and
-// which target pixels the shader must leave at exactly 1 (background or a planted fault).
+// What one run read back: the chain's output and the screen-sized AO, and which output
+// pixels the shader must leave at exactly 1 (background or a planted fault).
 struct one_run {
-    aogen::vulkan::chain_result out;
-    std::vector<float> full;
-    std::vector<uint8_t> must_be_one; // per target pixel
+    bench_run run;
+    std::vector<uint8_t> must_be_one; // per output pixel
     std::vector<uint8_t> faulted;     // per full-resolution pixel
     int width = 0;                    // the full resolution's width
+    const aogen::vulkan::chain_result& out() const { return run.out; }
 };
 
-inline size_t fault_pixel(const gbuffer_fault& f, int w, int h)
+inline one_run run_once(chain_cache& chains, const aogen::variant& v, scene_bench& bench, const bench_inputs& inputs)
 {
-    const int x = std::min(w - 1, int(f.u * w)), y = std::min(h - 1, int(f.v * h));
-    return size_t(y) * w + x;
-}
-
-inline one_run run_once(aogen::vulkan::context& ctx, chain_cache& chains, const aogen::variant& v, const prepared_scene& p,
-                        const std::vector<gbuffer_fault>& faults, const std::optional<aogen::vec2>& noise_rotation)
-{
-    aogen::scenes::gbuffer_options o;
-    o.use_scene_normals = false;
-    o.normals = v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
-    o.face_camera = false;
-    const aogen::scenes::scene seen = for_variant(p.scene, v);
-    aogen::vulkan::gbuffer g = aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(aogen::scenes::render_gbuffer(seen, *p.tracer, o));
     one_run r;
+    r.run = bench.run(chains.get(v), default_settings(v, bench.scene()), inputs);
+    const aogen::vulkan::gbuffer g = scene_bench::with_faults(bench.gbuffer(v), inputs.faults);
     r.width = g.width;
     r.faulted.assign(size_t(g.width) * g.height, 0);
-    for (const gbuffer_fault& f : faults) {
-        const size_t i = fault_pixel(f, g.width, g.height);
-        r.faulted[i] = 1;
-        if (f.what == gbuffer_fault::kind::nan_depth) g.depth[i] = std::nanf("");
-        else for (int k = 0; k < 3; ++k) g.normals[4 * i + k] = 0.0f;
-    }
-    const aogen::vulkan::gpu_gbuffer uploaded(ctx, g);
-    const auto [tw, th] = aogen::vulkan::target_size(v, g.width, g.height);
-    aogen::vulkan::chain_inputs in = aogen::vulkan::inputs_for(v, default_settings(v, p.scene), tw, th);
-    if (noise_rotation) {
-        const aogen::vec2 n = *noise_rotation;
-        for (size_t i = 0; i + 16 <= in.noise.size(); i += 16) {
-            const float texel[4] = {n.x, n.y, 0.0f, 1.0f};
-            std::memcpy(in.noise.data() + i, texel, sizeof texel);
-        }
-    }
-    const aogen::vulkan::chain& c = chains.get(v);
-    r.out = aogen::vulkan::bound_chain(ctx, c.passes(), uploaded, in, tw, th).run_once();
-    r.full = upsample(r.out.ao, r.out.width, r.out.height, r.out.width == g.width ? 1 : 2, g.width, g.height);
-    // An output pixel reads full pixel (x·k, y·k), clamped (common/depth.glsl's ao_full_pixel;
-    // k = 1 for a screen-sized output).
-    const int ow = r.out.width, oh = r.out.height;
-    const int k = ow == g.width ? 1 : 2;
+    for (const gbuffer_fault& f : inputs.faults) r.faulted[fault_pixel(f, g.width, g.height)] = 1;
+    // An output pixel reads full pixel (x·k, y·k), clamped (common/depth.glsl's ao_full_pixel).
+    const int ow = r.out().width, oh = r.out().height, k = r.run.scale;
+    // A zero normal gives AO 1 in the AO pass; a blur may still mix it with its neighbours.
+    const bool ao_pass_only = passes(v).size() == 1;
     r.must_be_one.assign(size_t(ow) * oh, 0);
     for (int y = 0; y < oh; ++y)
         for (int x = 0; x < ow; ++x) {
             const size_t full = size_t(std::min(y * k, g.height - 1)) * g.width + std::min(x * k, g.width - 1);
             const bool faulted_depth = r.faulted[full] && !std::isfinite(g.depth[full]);
             const bool faulted_normal = r.faulted[full] && v.normals != aogen::normal_source::reconstructed && std::isfinite(g.depth[full]);
-            // A zero normal gives AO 1 in the AO pass; a blur may still mix it with its neighbours.
-            const bool ao_pass_only = passes(v).size() == 1;
-            r.must_be_one[size_t(y) * ow + x] = !p.truth.hit[full] || faulted_depth || (faulted_normal && ao_pass_only);
+            r.must_be_one[size_t(y) * ow + x] = !bench.truth().hit[full] || faulted_depth || (faulted_normal && ao_pass_only);
         }
     return r;
 }
@@ -247,19 +200,19 @@ inline std::string fixed_text(double x, int digits)
 // the nearest fault), and how far from its fault the farthest clearly changed pixel lies.
 inline void compare_with_twin(suite_run& r, const one_run& a, const one_run& b, const stability_case& c)
 {
-    if (a.out.ao.size() != b.out.ao.size())
+    if (a.out().ao.size() != b.out().ao.size())
         aogen::fail("stability case " + c.name, "its faults' twin differs in size", "valid: faults with the twin the same scene");
     const int W = a.width;
-    const int k = a.out.width == W ? 1 : 2;
+    const int k = a.run.scale;
     std::vector<std::array<int, 2>> faults;
     for (size_t i = 0; i < a.faulted.size(); ++i)
         if (a.faulted[i]) faults.push_back({int(i % W), int(i / W)});
-    for (int y = 0; y < a.out.height; ++y)
-        for (int x = 0; x < a.out.width; ++x) {
+    for (int y = 0; y < a.out().height; ++y)
+        for (int x = 0; x < a.out().width; ++x) {
             double nearest = 1e30;
             for (const auto& f : faults) nearest = std::min(nearest, std::hypot(double(x * k - f[0]), double(y * k - f[1])));
-            const size_t i = size_t(y) * a.out.width + x;
-            const double diff = std::fabs(double(a.out.ao[i]) - b.out.ao[i]);
+            const size_t i = size_t(y) * a.out().width + x;
+            const double diff = std::fabs(double(a.out().ao[i]) - b.out().ao[i]);
             if (diff > c.criterion.twin_pixel_max) r.changed_reach = std::max(r.changed_reach, nearest);
             if (nearest > c.criterion.fault_reach) r.twin_pixel_max = std::max(r.twin_pixel_max, diff);
         }
@@ -343,13 +296,14 @@ inline suite_data run_suite(const suite_settings& settings)
     for (size_t ci = 0; ci < settings.cases.size(); ++ci) {
         const stability_case& c = settings.cases[ci];
         settings.progress("[case " + std::to_string(ci + 1) + "/" + std::to_string(settings.cases.size()) + "] " + c.name);
-        const detail::prepared_scene scene = detail::prepare(c.scene, settings.grid), twin = detail::prepare(c.twin, settings.grid);
-        suite_case_record record{c, scene.truth.noise_rms, {}};
+        scene_bench scene(ctx, c.scene, settings.grid), twin(ctx, c.twin, settings.grid);
+        suite_case_record record{c, scene.truth().noise_rms, {}};
         // The scaled scenes: only their G-buffers and which pixels hold geometry are read, so
         // the fewest reference rays (2 × 2) are enough.
-        std::vector<std::pair<double, detail::prepared_scene>> scaled;
+        std::vector<std::pair<double, std::unique_ptr<scene_bench>>> scaled;
         if (c.criterion.compare_scales)
-            for (double k : scale_factors()) scaled.emplace_back(k, detail::prepare(detail::scaled(c.scene, k), 2));
+            for (double k : scale_factors()) scaled.emplace_back(k, std::make_unique<scene_bench>(ctx, detail::scaled(c.scene, k), 2));
+        const bench_inputs inputs{c.faults, c.noise_rotation};
         for (const aogen::variant& base : settings.variants) {
             suite_run r;
             const aogen::variant v = detail::adapted(base, c.scene.camera), vt = detail::adapted(base, c.twin.camera);
@@ -360,38 +314,38 @@ inline suite_data run_suite(const suite_settings& settings)
                 record.runs.push_back(r);
                 continue;
             }
-            const detail::one_run a = detail::run_once(ctx, chains, v, scene, c.faults, c.noise_rotation);
-            const detail::one_run b = detail::run_once(ctx, chains, vt, twin, {}, std::nullopt);
-            for (const aogen::vulkan::raw_counts& k : a.out.raw) r.raw += k;
+            const detail::one_run a = detail::run_once(chains, v, scene, inputs);
+            const detail::one_run b = detail::run_once(chains, vt, twin, {});
+            for (const aogen::vulkan::raw_counts& k : a.out().raw) r.raw += k;
             for (size_t i = 0; i < a.must_be_one.size(); ++i)
-                if (a.must_be_one[i]) r.background_pixels += 1, r.background_not_one += a.out.ao[i] != 1.0f;
-            r.rmse = compare(a.full, scene.truth.ao, detail::scored_pixels(scene.truth, a.faulted)).rmse;
-            r.twin_rmse = compare(b.full, twin.truth.ao, detail::twin_scored_pixels(c, twin.truth)).rmse;
+                if (a.must_be_one[i]) r.background_pixels += 1, r.background_not_one += a.out().ao[i] != 1.0f;
+            r.rmse = compare(a.run.full, scene.truth().ao, detail::scored_pixels(scene.truth(), a.faulted)).rmse;
+            r.twin_rmse = compare(b.run.full, twin.truth().ao, detail::twin_scored_pixels(c, twin.truth())).rmse;
             if (!c.faults.empty()) detail::compare_with_twin(r, a, b, c);
             if (c.criterion.compare_depth)
                 for (aogen::depth_convention d : {aogen::depth_convention::standard, aogen::depth_convention::reversed, aogen::depth_convention::reversed_infinite}) {
                     aogen::variant vd = v;
                     vd.depth = d;
                     if (vd.depth == v.depth) continue;
-                    const detail::one_run o = detail::run_once(ctx, chains, vd, scene, c.faults, c.noise_rotation);
+                    const detail::one_run o = detail::run_once(chains, vd, scene, inputs);
                     double sum = 0;
-                    for (size_t i = 0; i < o.out.ao.size(); ++i) {
-                        const double diff = std::fabs(double(o.out.ao[i]) - a.out.ao[i]);
+                    for (size_t i = 0; i < o.out().ao.size(); ++i) {
+                        const double diff = std::fabs(double(o.out().ao[i]) - a.out().ao[i]);
                         r.depth_max = std::max(r.depth_max, diff), sum += diff;
                     }
-                    r.depth_mean = std::max(r.depth_mean, sum / double(std::max<size_t>(1, o.out.ao.size())));
+                    r.depth_mean = std::max(r.depth_mean, sum / double(std::max<size_t>(1, o.out().ao.size())));
                 }
             // Raw NaN, Inf and excess are judged over every run of the variant on the case.
-            std::vector<aogen::vulkan::raw_counts> per_pass = a.out.raw;
+            std::vector<aogen::vulkan::raw_counts> per_pass = a.out().raw;
             for (const auto& [k, p] : scaled) {
-                const detail::one_run o = detail::run_once(ctx, chains, v, p, c.faults, c.noise_rotation);
-                for (size_t i = 0; i < per_pass.size(); ++i) per_pass[i] += o.out.raw[i], r.raw += o.out.raw[i];
-                for (size_t i = 0; i < o.out.ao.size(); ++i) {
-                    const double diff = std::fabs(double(o.out.ao[i]) - a.out.ao[i]);
+                const detail::one_run o = detail::run_once(chains, v, *p, inputs);
+                for (size_t i = 0; i < per_pass.size(); ++i) per_pass[i] += o.out().raw[i], r.raw += o.out().raw[i];
+                for (size_t i = 0; i < o.out().ao.size(); ++i) {
+                    const double diff = std::fabs(double(o.out().ao[i]) - a.out().ao[i]);
                     if (diff > r.scale_max) r.scale_max = diff, r.scale_worst = k;
                 }
             }
-            detail::judge(r, c.criterion, a.out.passes, per_pass);
+            detail::judge(r, c.criterion, a.out().passes, per_pass);
             record.runs.push_back(r);
         }
         out.cases.push_back(std::move(record));

@@ -5,7 +5,7 @@
 //                  [--device NAME] [--out out/report]
 //
 // Writes into --out: report.md (the tables), results.json (every number),
-// error_vs_time.png (bench/report/plot_error_vs_time.py, python3-matplotlib) and
+// error_vs_time.png (report/plot_error_vs_time.py, python3-matplotlib) and
 // strips/<scene>.png (reference | variant | |error| for the Pareto-optimal variants, each
 // row labelled). results.json and report.md are written after every scene (marked
 // partial until the last), so an interrupted run keeps what it measured.

@@ -4,7 +4,7 @@
 // WHAT
 //   floor_sources(v) generates the compute shaders of v's floor: codegen::generate of v's
 //   compute twin (same axes, stage compute, no point-cloud fallback) with the templates
-//   whose arithmetic the floor drops replaced by bench/report/floor/'s fetch-only files
+//   whose arithmetic the floor drops replaced by report/floor/'s fetch-only files
 //   (floor/README.md lists them and what each fetches). Everything else — defines,
 //   bindings, the uniform block, depth and noise helpers, entry point, output image — is
 //   the variant's own, so a floor binds exactly like its variant (bound_chain, same
@@ -47,7 +47,7 @@ inline std::string floor_replacement_file(const std::string& name, const std::st
 {
     for (const auto& t : floor_embedded::templates)
         if (t.path == name) return std::string(t.text);
-    aogen::fail("fetch floor", "no floor template " + name + " for " + path, "valid: bench/report/floor/ holds one per replaced template");
+    aogen::fail("fetch floor", "no floor template " + name + " for " + path, "valid: report/floor/ holds one per replaced template");
 }
 
 // The fetch-only file that stands in for aogen template `path`, or "" when it is kept.

@@ -13,6 +13,7 @@
 #include <aogen_report/arguments.hpp>
 #include <aogen_tools/options.hpp>
 #include <aogen_report/run.hpp>
+#include <aogen_report/scene_bench.hpp>
 #include <aogen_report/settings.hpp>
 
 #include <aogen/ao_difference.hpp>
@@ -87,7 +88,7 @@ int main(int argc, char** argv)
             s.camera.width = w, s.camera.height = h;
             aogen_report::require_radius_works(s);
             const std::unique_ptr<aogen::truth::scene> tracer = aogen::scenes::make_tracer(s);
-            aogen_report::detail::gbuffer_cache gbuffers(vk, s, *tracer);
+            aogen_report::gbuffer_cache gbuffers(vk, s, *tracer);
             std::cerr << "aogen_target_check: scene " << s.name << "\n";
             for (const aogen::variant& v : vs) {
                 const std::string name = aogen::to_name(v);

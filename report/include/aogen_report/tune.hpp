@@ -22,9 +22,8 @@
 
 #include "grid_search.hpp"
 #include "metrics.hpp"
-#include "reference.hpp"
+#include "scene_bench.hpp"
 #include "settings.hpp"
-#include "suite.hpp"
 
 #include <aogen/vulkan/chain.hpp>
 
@@ -152,40 +151,13 @@ struct tune_result {
 
 namespace detail {
 
-// One scene, ready for any variant: its reference traced once, and its G-buffers made and
-// uploaded once per normal space and depth convention the variants read (run.hpp's
-// gbuffer_cache, as the report does).
-class tune_scene {
-public:
-    tune_scene(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, int grid)
-        : prepared_(prepare(s, grid)), gbuffers_(ctx, prepared_.scene, *prepared_.tracer)
-    {
-    }
-
-    // The RMSE of variant `v` (chain `c`) with `settings` against this scene's reference.
-    double rmse(aogen::vulkan::context& ctx, const aogen::variant& v, const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& settings)
-    {
-        const int W = prepared_.truth.width, H = prepared_.truth.height;
-        const auto [tw, th] = aogen::vulkan::target_size(v, W, H);
-        const aogen::vulkan::chain_result out =
-            aogen::vulkan::bound_chain(ctx, c.passes(), gbuffers_.gpu(v), aogen::vulkan::inputs_for(v, settings, tw, th), tw, th).run_once();
-        return compare(upsample(out.ao, out.width, out.height, out.width == W ? 1 : 2, W, H), prepared_.truth.ao, prepared_.truth.valid).rmse;
-    }
-    const aogen::scenes::scene& scene() const { return prepared_.scene; }
-
-private:
-    prepared_scene prepared_;
-    gbuffer_cache gbuffers_; // refers to prepared_'s scene and tracer: declared after it
-};
-
 using settings_maker = std::function<aogen::vulkan::chain_settings(const aogen::variant&, const aogen::scenes::scene&)>;
 
 // The mean over `scenes` of variant `v`'s RMSE with the settings `make` gives.
-inline double mean_rmse(aogen::vulkan::context& ctx, const aogen::variant& v, const aogen::vulkan::chain& c,
-                        std::vector<std::unique_ptr<tune_scene>>& scenes, const settings_maker& make)
+inline double mean_rmse(const aogen::vulkan::chain& c, std::vector<std::unique_ptr<scene_bench>>& scenes, const settings_maker& make)
 {
     double sum = 0;
-    for (auto& s : scenes) sum += s->rmse(ctx, v, c, make(v, s->scene()));
+    for (auto& s : scenes) sum += compare(s->run(c, make(c.var(), s->scene())).full, s->truth().ao, s->truth().valid).rmse;
     return scenes.empty() ? 0.0 : sum / double(scenes.size());
 }
 
@@ -204,17 +176,17 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
         r.variants.push_back(aogen::to_name(v));
         chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, v));
     }
-    std::vector<std::unique_ptr<detail::tune_scene>> train, validate;
-    for (const aogen::scenes::scene& s : t.train) require_radius_works(s), train.push_back(std::make_unique<detail::tune_scene>(ctx, s, t.grid));
-    for (const aogen::scenes::scene& s : t.validate) require_radius_works(s), validate.push_back(std::make_unique<detail::tune_scene>(ctx, s, t.grid));
+    std::vector<std::unique_ptr<scene_bench>> train, validate;
+    for (const aogen::scenes::scene& s : t.train) require_radius_works(s), train.push_back(std::make_unique<scene_bench>(ctx, s, t.grid));
+    for (const aogen::scenes::scene& s : t.validate) require_radius_works(s), validate.push_back(std::make_unique<scene_bench>(ctx, s, t.grid));
     t.progress(std::to_string(t.variants.size()) + " variants, " + std::to_string(train.size()) + " training and " + std::to_string(validate.size()) +
                " validation scenes ready");
 
     // The mean over variants of each variant's mean over `scenes`; per variant into `each`.
-    const auto joint = [&](std::vector<std::unique_ptr<detail::tune_scene>>& scenes, const detail::settings_maker& make, std::vector<double>* each) {
+    const auto joint = [&](std::vector<std::unique_ptr<scene_bench>>& scenes, const detail::settings_maker& make, std::vector<double>* each) {
         double sum = 0;
         for (size_t i = 0; i < t.variants.size(); ++i) {
-            const double e = detail::mean_rmse(ctx, t.variants[i], *chains[i], scenes, make);
+            const double e = detail::mean_rmse(*chains[i], scenes, make);
             if (each) each->push_back(e);
             sum += e;
         }
