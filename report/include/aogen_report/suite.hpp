@@ -39,6 +39,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -147,7 +148,10 @@ inline one_run run_once(chain_cache& chains, const aogen::variant& v, scene_benc
 {
     one_run r;
     r.run = bench.run(chains.get(v), default_settings(v, bench.scene()), inputs);
-    const aogen::vulkan::gbuffer g = scene_bench::with_faults(bench.gbuffer(v), inputs.faults);
+    // The G-buffer the run read: the cached one, or a faulted copy only where there are faults.
+    std::optional<aogen::vulkan::gbuffer> faulted_copy;
+    if (!inputs.faults.empty()) faulted_copy = scene_bench::with_faults(bench.gbuffer(v), inputs.faults);
+    const aogen::vulkan::gbuffer& g = faulted_copy ? *faulted_copy : bench.gbuffer(v);
     r.width = g.width;
     r.faulted.assign(size_t(g.width) * g.height, 0);
     for (const gbuffer_fault& f : inputs.faults) r.faulted[fault_pixel(f, g.width, g.height)] = 1;
