@@ -2,9 +2,9 @@
 //
 //   aogen seeds --out out/seeds
 //
-// For each preset of params.hpp (Taos SSAO, Taos GTAO, Unique Engine SSAO, the
+// For each preset of presets.hpp (Taos SSAO, Taos GTAO, Unique Engine SSAO, the
 // point-cloud viewer's ssao.wgsl) it writes, under DIR/<preset>/:
-//   params.json                    the preset's settings
+//   params.json                    the preset's variant axes and settings
 //   kernel.json, kernel.rgba32f.bin            the hemisphere kernel (SSAO presets)
 //   noise.<encoding>.bin, noise.json           the 4×4 rotation tile, every encoding
 //   uniforms.<rules>.bin / .json               the pass's uniform block bytes and layout
@@ -21,7 +21,7 @@
 #include <aogen/declare.hpp>
 #include <aogen/kernel.hpp>
 #include <aogen/noise.hpp>
-#include <aogen/params.hpp>
+#include <aogen/presets.hpp>
 #include <aogen/uniforms.hpp>
 
 #include <CLI/CLI.hpp>
@@ -68,43 +68,13 @@ public:
 
     void add(const std::string& path, std::string bytes) { files[path] = std::move(bytes); }
 
-    void add_ssao(const ssao_preset& p)
+    // The data of preset `p`: an SSAO or a GTAO one (the seeds have no VBAO).
+    void add_preset(const preset& p)
     {
         validate(p);
-        const std::string dir = std::string(p.name) + "/";
-        const auto samples = kernel::generate(kernel::distribution_from_name(p.ssao.kernel), p.ssao.samples,
-                                              p.ssao.kernel_seed, kernel::scale_law::crytek);
-        add(dir + "params.json", ssao_json(p).dump(2) + "\n");
-        add(dir + "kernel.json", vec4_array("kernel", samples, text_language::json));
-        add(dir + "kernel.rgba32f.bin", vec4_bytes(samples));
-        add_noise(dir, p.ssao.noise_size, p.ssao.noise_seed);
-        const bool seed004_block = p.ssao.point_cloud_fallback; // the viewer keeps its own block
-        for (const rules_output& o : uniform_outputs) {
-            const layout::block_desc block = seed004_block ? uniforms::pointcloud_block() : uniforms::ssao_block(p.ssao.samples);
-            const std::vector<uint8_t> bytes =
-                seed004_block ? uniforms::pack_pointcloud(p.ssao, example_camera::get().proj, o.rules)
-                              : uniforms::pack_ssao(p.ssao, example_camera::get(), samples,
-                                                    example_camera::target(p.ssao.half_resolution), o.rules);
-            add_uniforms(dir, block, o, bytes);
-        }
-    }
-
-    void add_gtao(const gtao_preset& p)
-    {
-        validate(p);
-        const std::string dir = std::string(p.name) + "/";
-        nlohmann::ordered_json j;
-        j["name"] = p.name;
-        j["gtao"] = {{"radius", json_float(p.gtao.radius)}, {"thickness_bias", json_float(p.gtao.thickness_bias)}, {"strength", json_float(p.gtao.strength)},
-                     {"falloff_range", json_float(p.gtao.falloff_range)}, {"thin_occluder", json_float(p.gtao.thin_occluder)},
-                     {"slices", p.gtao.slices}, {"steps", p.gtao.steps}, {"half_resolution", p.gtao.half_resolution},
-                     {"normals", to_name(p.gtao.normals)}};
-        j["blur"] = blur_json(p.blur);
-        add(dir + "params.json", j.dump(2) + "\n");
-        add_noise(dir, noise::default_size, 2);
-        for (const rules_output& o : uniform_outputs)
-            add_uniforms(dir, uniforms::gtao_block(), o,
-                         uniforms::pack_gtao(p.gtao, example_camera::get(), example_camera::target(p.gtao.half_resolution), o.rules));
+        if (p.variant.tech == technique::ssao) add_ssao(p);
+        else if (p.variant.tech == technique::gtao) add_gtao(p);
+        else fail("seeds", std::string(p.name) + " is a " + to_name(p.variant.tech) + " preset", "valid: ssao, gtao");
     }
 
     std::string manifest() const
@@ -120,6 +90,45 @@ public:
     }
 
 private:
+    void add_ssao(const preset& p)
+    {
+        const ssao_params& s = p.settings.ssao;
+        const std::string dir = std::string(p.name) + "/";
+        const auto samples = kernel::generate(kernel::distribution_from_name(s.kernel), p.variant.ssao_samples,
+                                              s.kernel_seed, kernel::scale_law::crytek);
+        add(dir + "params.json", ssao_json(p).dump(2) + "\n");
+        add(dir + "kernel.json", vec4_array("kernel", samples, text_language::json));
+        add(dir + "kernel.rgba32f.bin", vec4_bytes(samples));
+        add_noise(dir, s.noise_size, s.noise_seed);
+        const bool seed004_block = p.variant.point_cloud_fallback; // the viewer keeps its own block
+        for (const rules_output& o : uniform_outputs) {
+            const layout::block_desc block = seed004_block ? uniforms::pointcloud_block() : uniforms::ssao_block(p.variant.ssao_samples);
+            const std::vector<uint8_t> bytes =
+                seed004_block ? uniforms::pack_pointcloud(s, example_camera::get().proj, o.rules)
+                              : uniforms::pack_ssao(s, example_camera::get(), samples,
+                                                    example_camera::target(p.variant.half_resolution), o.rules);
+            add_uniforms(dir, block, o, bytes);
+        }
+    }
+
+    void add_gtao(const preset& p)
+    {
+        const gtao_params& g = p.settings.gtao;
+        const std::string dir = std::string(p.name) + "/";
+        nlohmann::ordered_json j;
+        j["name"] = p.name;
+        j["gtao"] = {{"radius", json_float(g.radius)}, {"thickness_bias", json_float(g.thickness_bias)}, {"strength", json_float(g.strength)},
+                     {"falloff_range", json_float(g.falloff_range)}, {"thin_occluder", json_float(g.thin_occluder)},
+                     {"slices", p.variant.gtao_slices}, {"steps", p.variant.gtao_steps}, {"half_resolution", p.variant.half_resolution},
+                     {"normals", to_name(p.variant.normals)}};
+        j["blur"] = blur_json(p);
+        add(dir + "params.json", j.dump(2) + "\n");
+        add_noise(dir, noise::default_size, 2);
+        for (const rules_output& o : uniform_outputs)
+            add_uniforms(dir, uniforms::gtao_block(), o,
+                         uniforms::pack_gtao(g, example_camera::get(), example_camera::target(p.variant.half_resolution), o.rules));
+    }
+
     void add_noise(const std::string& dir, int size, uint64_t seed)
     {
         const noise::tile tile = noise::rotations(size, seed);
@@ -141,24 +150,28 @@ private:
         add(dir + o.declaration_file, layout::declare(l, o.language));
     }
 
-    static nlohmann::ordered_json blur_json(const blur_params& b)
+    // The blur's axes (the variant's) and constants (the settings').
+    static nlohmann::ordered_json blur_json(const preset& p)
     {
-        return {{"mode", to_name(b.mode)}, {"depth", to_name(b.depth)}, {"raw_depth_k", json_float(b.raw_depth_k)},
+        const blur_params& b = p.settings.blur;
+        return {{"mode", to_name(p.variant.blur)}, {"depth", to_name(p.variant.blur_depth)}, {"raw_depth_k", json_float(b.raw_depth_k)},
                 {"linear_sharpness", json_float(b.linear_sharpness)}};
     }
 
-    static nlohmann::ordered_json ssao_json(const ssao_preset& p)
+    // The SSAO axes and settings, interleaved in the order the files have always had.
+    static nlohmann::ordered_json ssao_json(const preset& p)
     {
-        const ssao_params& s = p.ssao;
+        const ssao_params& s = p.settings.ssao;
+        const variant& v = p.variant;
         nlohmann::ordered_json j;
         j["name"] = p.name;
-        j["ssao"] = {{"samples", s.samples}, {"radius", json_float(s.radius)}, {"bias", json_float(s.bias)}, {"output", to_name(s.output)},
+        j["ssao"] = {{"samples", v.ssao_samples}, {"radius", json_float(s.radius)}, {"bias", json_float(s.bias)}, {"output", to_name(v.output)},
                      {"strength", json_float(s.strength)}, {"power", json_float(s.power)}, {"intensity", json_float(s.intensity)},
-                     {"range_check", to_name(s.range_check)}, {"kernel", s.kernel}, {"kernel_seed", s.kernel_seed},
+                     {"range_check", to_name(v.range_check)}, {"kernel", s.kernel}, {"kernel_seed", s.kernel_seed},
                      {"noise_size", s.noise_size}, {"noise_seed", s.noise_seed},
-                     {"half_resolution", s.half_resolution}, {"normals", to_name(s.normals)},
-                     {"point_cloud_fallback", s.point_cloud_fallback}};
-        j["blur"] = blur_json(p.blur);
+                     {"half_resolution", v.half_resolution}, {"normals", to_name(v.normals)},
+                     {"point_cloud_fallback", v.point_cloud_fallback}};
+        j["blur"] = blur_json(p);
         return j;
     }
 };
@@ -177,10 +190,7 @@ struct seeds_command {
     {
         require_writable_folder(out, "--out");
         seeds_artifacts a;
-        a.add_ssao(presets::taos_ssao());
-        a.add_gtao(presets::taos_gtao());
-        a.add_ssao(presets::unique_engine_ssao());
-        a.add_ssao(presets::pointcloud_viewer_ssao());
+        for (const preset& p : presets::seeds()) a.add_preset(p);
         a.add("manifest.json", a.manifest());
         // Every file or none: what was written is said once all of it is in place.
         file_set set(out);

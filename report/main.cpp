@@ -14,6 +14,8 @@
 // written to a temporary name and renamed.
 #include <aogen_report/arguments.hpp>
 #include <aogen_report/markdown.hpp>
+#include <aogen_report/pareto.hpp>
+#include <aogen_report/run.hpp>
 #include <aogen_report/suite_report.hpp>
 
 #include <aogen/matrix.hpp>

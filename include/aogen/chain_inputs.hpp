@@ -5,7 +5,8 @@
 //   The data every runner of a chain uploads, with no API in it: aogen::vulkan's harness and
 //   aogen::gl's runner read the same bytes, so their outputs can be compared pixel for pixel.
 //     gbuffer         raw depth and normals as floats, row-major, top row first
-//     chain_settings  the params of every pass and the camera
+//     chain_settings  the run-time settings of every pass (params.hpp's ao_settings) and
+//                     the camera
 //     inputs_for(v, settings, target_w, target_h)
 //                     the std140 uniform block of each pass of `v`, the noise tile the
 //                     params name (4 × 4 for GTAO and VBAO) and, for SSAO, its kernel
@@ -42,13 +43,20 @@ struct chain_inputs {
     std::vector<uint8_t> noise;                 // its RGBA32F texels, row-major
 };
 
-struct chain_settings {
-    ssao_params ssao;   // ssao.samples is taken from the variant
-    gtao_params gtao;
-    vbao_params vbao;
-    blur_params blur;
+// What a chain of any variant reads at run time: the settings of each pass (a variant reads
+// its technique's and its blur's) and the camera.
+struct chain_settings : ao_settings {
     uniforms::camera camera;
 };
+
+// `settings` seen through `camera`.
+inline chain_settings with_camera(const ao_settings& settings, const uniforms::camera& camera)
+{
+    chain_settings s;
+    static_cast<ao_settings&>(s) = settings;
+    s.camera = camera;
+    return s;
+}
 
 // The AO target size of `v` for a G-buffer of w × h.
 inline std::pair<int, int> target_size(const variant& v, int w, int h)
@@ -77,8 +85,7 @@ inline int output_scale(const variant& v)
 inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
 {
     constexpr layout::rules rules = layout::rules::std140;
-    ssao_params ssao = s.ssao;
-    ssao.samples = v.ssao_samples;
+    const ssao_params& ssao = s.ssao;
     chain_inputs in;
     in.noise_size = has_slices(v.tech) ? 4 : ssao.noise_size;
     in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
@@ -88,7 +95,7 @@ inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int ta
         else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size));
         else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size));
         else {
-            const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), ssao.samples, ssao.kernel_seed);
+            const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), v.ssao_samples, ssao.kernel_seed);
             in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules));
         }
     }

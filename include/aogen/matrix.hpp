@@ -12,8 +12,8 @@
 //     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/denoise/none, compute
 //     (half resolution: DESIGN.md's default);
 //     half-resolution variants end with the depth-aware upsample;
-//     the seeds' own configurations as fragment variants (Taos SSAO, Taos GTAO,
-//     Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it;
+//     the seeds' own configurations as fragment variants (presets.hpp: Taos SSAO, Taos
+//     GTAO, Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it;
 //     and VBAO at quality.hpp's four presets (1×2, 2×2, 3×3, 9×3), half resolution,
 //     bilateral blur, and High (3×3) at full resolution, compute.
 //
@@ -24,6 +24,7 @@
 //     std::vector<aogen::variant> vs = aogen::expand(m);   // 4 variants
 #pragma once
 
+#include "presets.hpp"
 #include "quality.hpp"
 #include "variant.hpp"
 
@@ -127,16 +128,13 @@ inline std::vector<variant> vbao_default_variants()
     return out;
 }
 
-// The seeds' own configurations, as the fragment variants their engines run (their
-// half-resolution targets without aogen's upsample pass: the seeds have none).
+// The seeds' own configurations, as the fragment variants their engines run (presets.hpp:
+// their half-resolution targets without aogen's upsample pass, as the seeds have none).
 inline std::vector<variant> seed_variants()
 {
-    return {
-        variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest"), // Taos SSAOPass
-        variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest"), // Taos GTAOPass
-        variant_from_name("ssao-s32-half-bilateral-gbufview-std-persp-fs-powint-nearest"),    // Unique Engine UeSSAOPass
-        variant_from_name("ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004"),            // point-cloud ssao.wgsl
-    };
+    std::vector<variant> out;
+    for (const preset& p : presets::seeds()) append_unique(out, p.variant);
+    return out;
 }
 
 inline std::vector<variant> default_matrix()

@@ -1,43 +1,46 @@
-// aogen/params.hpp — the settings of each AO pass, their defaults, ranges and presets.
+// aogen/params.hpp — the run-time settings of each AO pass, their defaults and ranges.
 //
-// One plain struct per pass (XeGTAO style): every setting an SSAO, GTAO or blur pass
-// takes is a field here, with its default, its valid range and its meaning written
-// next to it. The ranges are `static constexpr` members beside the fields, so the
+// One plain struct per pass (XeGTAO style): every number an SSAO, GTAO, VBAO or blur pass
+// reads at run time -- what its uniform block and the data it uploads (kernel, noise tile)
+// carry -- is a field here, with its default, its valid range and its meaning written next
+// to it. The ranges are `static constexpr` members beside the fields (range.hpp), so the
 // documentation, `validate()` and the command line all read the same numbers.
 //
 //   ssao_params   hemisphere SSAO (Taos SSAOPass, Unique Engine UeSSAOPass, ssao.wgsl)
 //   gtao_params   ground-truth AO, slice/horizon based (Taos GTAOPass)
 //   vbao_params   visibility-bitmask AO: GTAO's slices with a 32-sector mask and a thickness
-//   blur_params   the denoise pass after either: 7-tap bilateral, 4×4 box, 5×5 edge-aware
-//                 denoise, or none; the depth term of the depth-aware upsample
-//   presets::     the seeds' configurations, as ssao_preset / gtao_preset bundles
+//   blur_params   the denoise pass after either: the bilateral blur's and the denoise
+//                 filter's weights and depth terms, and the depth-aware upsample's
+//   ao_settings   all four: what a chain of any variant reads (chain_inputs.hpp)
+//
+// What a variant compiles in -- sample, slice and step counts, the blur, where normals
+// come from, half resolution, SSAO's output form and range check -- is not here: those
+// are the variant's axes (variant.hpp, axes.hpp), stored there only. The seeds' own
+// configurations, a variant and its settings each, are presets.hpp's.
 //
 // Usage:
 //
 //     #include <aogen/params.hpp>
 //
-//     aogen::ssao_preset p = aogen::presets::taos_ssao();   // 16 samples, half res, ...
-//     p.ssao.radius = 0.8f;                                  // tune a field
-//     p.blur.mode = aogen::blur_mode_from_name("box");       // names <-> enum values
+//     aogen::ssao_params p;                  // the defaults
+//     p.radius = 0.8f;                       // tune a field
 //     aogen::validate(p);  // throws aogen::error, e.g.
 //                          // "ssao.radius: nan is not a finite number (valid: > 0 and <= 1e+15)"
 //
-//     aogen::to_name(p.blur.mode);                  // "box"
-//     aogen::ssao_params::radius_range;             // {0, 1e15, lower bound excluded}
+//     aogen::ssao_params::radius_range;                    // {0, 1e15, lower bound excluded}
 //     aogen::to_string(aogen::ssao_params::radius_range);  // "> 0 and <= 1e+15"
 //
 // Nothing here touches a GPU: these are the numbers that kernel.hpp, noise.hpp,
-// layout.hpp and the shader templates consume. Fields are float because that is what
-// reaches the shader; validation rejects NaN, infinities and out-of-range values, and
-// enum values outside their enumeration (for instance cast from an int read from a
-// file). Errors follow error.hpp: "<struct>.<field>: <value> <problem> (valid: <range>)".
+// uniforms.hpp and the shader templates consume. Fields are float because that is what
+// reaches the shader; validation rejects NaN, infinities and out-of-range values. Errors
+// follow error.hpp: "<struct>.<field>: <value> <problem> (valid: <range>)".
 //
 // Numbers the seeds state are used exactly. Numbers the seeds leave open are marked
 // "(ours)" where they are chosen.
 #pragma once
 
 #include "error.hpp"
-#include "names.hpp"
+#include "range.hpp"
 
 #include <array>
 #include <cmath>
@@ -48,153 +51,12 @@
 
 namespace aogen {
 
-// ---------------------------------------------------------------------------------
-// Ranges
-// ---------------------------------------------------------------------------------
-
-// An inclusive integer range lo..hi.
-struct int_range {
-    int lo;
-    int hi;
-    constexpr bool contains(int v) const { return v >= lo && v <= hi; }
-};
-
-// A range of finite floats: [lo, hi], or (lo, hi] when `lo_excluded`.
-struct float_range {
-    float lo;
-    float hi;
-    bool lo_excluded;
-    bool contains(float v) const
-    {
-        if (!std::isfinite(v)) return false;
-        return (lo_excluded ? v > lo : v >= lo) && v <= hi;
-    }
-};
-
 // The largest world length a setting may hold (a radius, a bias). Not a limit of taste but
 // of float arithmetic: every radius is capped at the screen's extent at the pixel's depth
 // before it is used (ssao.glsl's ao_ssao_radius, common/slices.glsl's ao_slice_radius), so
 // what must stay finite is the one length that is not capped, VBAO's thickness (up to 100 ×
 // its radius, params below), and its square: (100 · 1e15)² = 1e34 < FLT_MAX ≈ 3.4e38.
 inline constexpr float max_world_length = 1e15f;
-
-// The words error messages and help text use for a range: "1..256", "> 0 and <= 1e+15".
-inline std::string to_string(const int_range& r)
-{
-    return format_number(r.lo) + ".." + format_number(r.hi);
-}
-inline std::string to_string(const float_range& r)
-{
-    if (r.lo_excluded) return "> " + format_number(r.lo) + " and <= " + format_number(r.hi);
-    return format_number(r.lo) + ".." + format_number(r.hi);
-}
-
-// ---------------------------------------------------------------------------------
-// Enumerations and their names
-// ---------------------------------------------------------------------------------
-//
-// Every enum has a table of canonical names (lower case, '_' between words) used by
-// to_name(), the *_from_name() readers, the command line and JSON, read through
-// names.hpp. The readers also accept '-' for '_' ("gbuffer-world" as DESIGN.md spells
-// the axis values).
-
-// How an SSAO pass turns the occlusion sum into its output.
-enum class ssao_output {
-    // Taos SSAOPass: out = clamp(1 − occlusion/N · strength, 0, 1).
-    // ssao.wgsl (seed 004) is this form with strength 1.
-    strength,
-    // Unique Engine UeSSAOPass: ao = pow(1 − occlusion/N, power), then blended toward 1
-    // by intensity: out = clamp(mix(1, ao, intensity), 0, 1). This is our reading of its
-    // documentation ("power: the exponent applied to the occlusion factor; higher values
-    // make the shadows darker" — ao^power with power > 1 is darker; "intensity: blending
-    // factor for the final composition, 0 means no AO, 1 means full AO" — a mix). Its
-    // own example uses intensity 1.5, so intensity may exceed 1 (extrapolating past
-    // the raw AO); the clamp keeps the output in [0, 1].
-    power_intensity,
-};
-inline constexpr std::array<enum_name<ssao_output>, 2> ssao_output_names{{
-    {ssao_output::strength, "strength"},
-    {ssao_output::power_intensity, "power_intensity"},
-}};
-
-// How much one occluding sample counts, from the view-space depth difference
-// Δz = pixel z − scene z at the sample.
-enum class ssao_range_check {
-    // Taos SSAOPass: vote · (1 − smoothstep(0, radius, |Δz|)) — fades to 0 at |Δz| = radius.
-    taos,
-    // ssao.wgsl (seed 004): vote · smoothstep(0, 1, radius / |Δz|) — 1 while |Δz| <= radius,
-    // then falls off with distance (never exactly 0).
-    seed004,
-};
-inline constexpr std::array<enum_name<ssao_range_check>, 2> ssao_range_check_names{{
-    {ssao_range_check::taos, "taos"},
-    {ssao_range_check::seed004, "seed004"},
-}};
-
-// Where a pass gets its surface normal from (a variant axis; see DESIGN.md).
-enum class normal_source {
-    gbuffer_world,  // world-space G-buffer normal, rotated into view space (Taos)
-    gbuffer_view,   // view-space normal target (Unique Engine's normal pre-pass)
-    reconstructed,  // from the depth buffer alone (ssao.wgsl: cross of position derivatives)
-};
-inline constexpr std::array<enum_name<normal_source>, 3> normal_source_names{{
-    {normal_source::gbuffer_world, "gbuffer_world"},
-    {normal_source::gbuffer_view, "gbuffer_view"},
-    {normal_source::reconstructed, "reconstructed"},
-}};
-
-// The denoise pass after SSAO or GTAO.
-enum class blur_mode {
-    bilateral,  // Taos 'quality': two-pass separable 7-tap Gaussian with a depth term
-    box,        // Taos 'performance': single-pass 4×4 unweighted box average
-    none,       // raw AO (ssao.wgsl has no blur)
-    denoise,    // ours: single-pass 5×5 edge-aware filter (blur_denoise.glsl), one pass
-                // instead of the bilateral's two, for XeGTAO's denoiser's cost
-};
-inline constexpr std::array<enum_name<blur_mode>, 4> blur_mode_names{{
-    {blur_mode::bilateral, "bilateral"},
-    {blur_mode::box, "box"},
-    {blur_mode::none, "none"},
-    {blur_mode::denoise, "denoise"},
-}};
-
-// How a half-resolution AO target reaches the screen's resolution (full-resolution
-// variants have nothing to upsample).
-enum class upsample_mode {
-    // A joint bilateral upsample pass (upsample.glsl): each screen pixel blends the AO
-    // target texels around it by their bilinear weights times a depth term against the
-    // pixel's own full-resolution depth, so AO does not bleed across silhouettes the
-    // half-resolution target cannot resolve. The chain's output is screen-sized.
-    depth_aware,
-    // No pass: the chain's output is the half-resolution target, and whoever samples it
-    // upsamples (the report reads target pixel x / 2: nearest, as a renderer without an
-    // upsample pass would show it).
-    nearest,
-};
-inline constexpr std::array<enum_name<upsample_mode>, 2> upsample_mode_names{{
-    {upsample_mode::depth_aware, "depth_aware"},
-    {upsample_mode::nearest, "nearest"},
-}};
-
-// The depth term of the bilateral blur, which stops AO bleeding across silhouettes.
-enum class bilateral_depth {
-    // Seed-exact (Taos): weight · exp(−|Δ raw depth| · raw_depth_k), raw depth being the
-    // depth-buffer value. Depends on near/far and the depth convention: far from the
-    // camera a standard [0,1] buffer's values barely change, so edges hardly stop the
-    // blur; close up the differences are large and every depth weight can underflow.
-    seed_raw,
-    // View-space linear depth: weight · exp(−|Δz_view| · linear_sharpness), Δz in world
-    // units. The same edge stop at every distance and for every depth convention.
-    linear,
-};
-inline constexpr std::array<enum_name<bilateral_depth>, 2> bilateral_depth_names{{
-    {bilateral_depth::seed_raw, "seed_raw"},
-    {bilateral_depth::linear, "linear"},
-}};
-
-static_assert(names::distinct(ssao_output_names) && names::distinct(ssao_range_check_names) &&
-              names::distinct(normal_source_names) && names::distinct(blur_mode_names) &&
-              names::distinct(bilateral_depth_names) && names::distinct(upsample_mode_names));
 
 namespace detail {
 
@@ -206,56 +68,7 @@ inline std::string field(std::string_view prefix, std::string_view name)
     return s;
 }
 
-// A finite float inside `r`, worded like error.hpp's require_finite_* helpers but
-// printing the float as a float ("0.1", not "0.10000000149011612").
-inline void require_in(std::string_view subject, float value, const float_range& r)
-{
-    std::string valid = "valid: " + to_string(r);
-    if (!std::isfinite(value)) fail(subject, format_number(value) + " is not a finite number", valid);
-    if (!r.contains(value)) fail(subject, format_number(value) + " is out of range", valid);
-}
-
-inline void require_in(std::string_view subject, int value, const int_range& r)
-{
-    require_range(subject, value, r.lo, r.hi);
-}
-
 } // namespace detail
-
-// Enum -> canonical name. A value outside the enumeration throws aogen::error.
-inline const char* to_name(ssao_output v) { return names::name_of(ssao_output_names, v, "ssao_output"); }
-inline const char* to_name(ssao_range_check v) { return names::name_of(ssao_range_check_names, v, "ssao_range_check"); }
-inline const char* to_name(normal_source v) { return names::name_of(normal_source_names, v, "normal_source"); }
-inline const char* to_name(blur_mode v) { return names::name_of(blur_mode_names, v, "blur_mode"); }
-inline const char* to_name(bilateral_depth v) { return names::name_of(bilateral_depth_names, v, "bilateral_depth"); }
-inline const char* to_name(upsample_mode v) { return names::name_of(upsample_mode_names, v, "upsample_mode"); }
-
-// Name -> enum. An unknown name throws aogen::error listing the valid names; `subject`
-// is what the message names (pass the option or JSON path, e.g. "--blur" or "blur.mode").
-inline ssao_output ssao_output_from_name(std::string_view name, std::string_view subject = "ssao.output")
-{
-    return names::value_of(ssao_output_names, name, subject);
-}
-inline ssao_range_check ssao_range_check_from_name(std::string_view name, std::string_view subject = "ssao.range_check")
-{
-    return names::value_of(ssao_range_check_names, name, subject);
-}
-inline normal_source normal_source_from_name(std::string_view name, std::string_view subject = "normals")
-{
-    return names::value_of(normal_source_names, name, subject);
-}
-inline blur_mode blur_mode_from_name(std::string_view name, std::string_view subject = "blur.mode")
-{
-    return names::value_of(blur_mode_names, name, subject);
-}
-inline bilateral_depth bilateral_depth_from_name(std::string_view name, std::string_view subject = "blur.depth")
-{
-    return names::value_of(bilateral_depth_names, name, subject);
-}
-inline upsample_mode upsample_mode_from_name(std::string_view name, std::string_view subject = "upsample")
-{
-    return names::value_of(upsample_mode_names, name, subject);
-}
 
 // ---------------------------------------------------------------------------------
 // SSAO
@@ -265,12 +78,9 @@ inline upsample_mode upsample_mode_from_name(std::string_view name, std::string_
 // samples in the normal-oriented hemisphere (rotated by a tiled noise vector) are
 // projected to the screen; a sample is occluded when the scene surface there is closer
 // to the camera than the sample by more than `bias`. Each vote is weighted by the range
-// check, summed to `occlusion`, and turned into the output by `output`.
+// check, summed to `occlusion`, and turned into the output. N, the range check and the
+// output form are the variant's (variant::ssao_samples, range_check, output).
 struct ssao_params {
-    // Kernel samples per pixel, N. Taos: 16, Unique Engine: 32, ssao.wgsl: 64.
-    static constexpr int_range samples_range{1, 256};
-    int samples = 16;
-
     // Hemisphere radius in view-space units; also the range check's scale.
     // 0.5 is Unique Engine's default (and ours for Taos SSAO and ssao.wgsl).
     static constexpr float_range radius_range{0.0f, max_world_length, true};
@@ -281,10 +91,7 @@ struct ssao_params {
     static constexpr float_range bias_range{0.0f, max_world_length, false};
     float bias = 0.025f;
 
-    // Which formula makes the output (see ssao_output). Default: Taos' strength form.
-    ssao_output output = ssao_output::strength;
-
-    // output == strength: out = clamp(1 − occlusion/N · strength, 0, 1).
+    // The variant's output ssao_output::strength: out = clamp(1 − occlusion/N · strength, 0, 1).
     // 0 = no AO, 1 = the plain average, > 1 darkens (saturates sooner). Not tuned yet:
     // the search's best (3.3 at a radius of 2 R) multiplies every sample's vote, and a
     // single vote flipping at the bias threshold then moves a pixel by 0.2 -- the
@@ -292,18 +99,15 @@ struct ssao_params {
     static constexpr float_range strength_range{0.0f, 100.0f, false};
     float strength = 1.0f;
 
-    // output == power_intensity: ao = pow(1 − occlusion/N, power). Must be > 0 (GLSL's
+    // Output ssao_output::power_intensity: ao = pow(1 − occlusion/N, power). Must be > 0 (GLSL's
     // pow(0, y) is undefined for y <= 0). Unique Engine default 1.0.
     static constexpr float_range power_range{0.0f, 100.0f, true};
     float power = 1.0f;
 
-    // output == power_intensity: out = clamp(mix(1, ao, intensity), 0, 1).
+    // Output ssao_output::power_intensity: out = clamp(mix(1, ao, intensity), 0, 1).
     // 0 = no AO, 1 = full AO, > 1 extrapolates (Unique Engine's example uses 1.5).
     static constexpr float_range intensity_range{0.0f, 100.0f, false};
     float intensity = 1.0f;
-
-    // How an occluding vote is weighted by its depth difference (see ssao_range_check).
-    ssao_range_check range_check = ssao_range_check::taos;
 
     // Kernel distribution, by name, resolved by kernel.hpp (which lists and checks the
     // distributions it knows). Stored as a name so params.hpp does not depend on
@@ -323,17 +127,6 @@ struct ssao_params {
 
     // Seed of the noise tile's random numbers: any value.
     std::uint32_t noise_seed = 2;
-
-    // AO at half the input resolution (Taos) instead of full (ssao.wgsl).
-    bool half_resolution = true;
-
-    // Where the normal comes from. Taos: world-space G-buffer normal.
-    normal_source normals = normal_source::gbuffer_world;
-
-    // ssao.wgsl's point-cloud fallback: pixels whose 8 neighbours all share their depth
-    // (billboard interiors) get a depth-cavity test instead of hemisphere sampling.
-    // Its constants are in aogen::point_cloud below.
-    bool point_cloud_fallback = false;
 };
 
 // Constants of ssao.wgsl's point-cloud fallback (seed 004), on raw depth-buffer values
@@ -405,20 +198,6 @@ struct gtao_params {
     // was about 0.5).
     static constexpr float_range strength_range{0.0f, 100.0f, true};
     float strength = 1.109375f;
-
-    // Slice directions per pixel (rotated per pixel by noise). DESIGN.md default 2.
-    static constexpr int_range slices_range{1, 16};
-    int slices = 2;
-
-    // Horizon samples per side of each slice. DESIGN.md default 3.
-    static constexpr int_range steps_range{1, 16};
-    int steps = 3;
-
-    // AO at half the input resolution.
-    bool half_resolution = true;
-
-    // Where the normal comes from (projected onto each slice).
-    normal_source normals = normal_source::gbuffer_world;
 };
 
 // ---------------------------------------------------------------------------------
@@ -465,18 +244,6 @@ struct vbao_params {
     // Exponent applied to the visibility: out = visibility^strength (> 0, as GTAO's). Tuned.
     static constexpr float_range strength_range{0.0f, 100.0f, true};
     float strength = 1.28125f;
-
-    // Slice directions per pixel and samples per side of each, as GTAO's (variant axes).
-    static constexpr int_range slices_range{1, 16};
-    int slices = 2;
-    static constexpr int_range steps_range{1, 16};
-    int steps = 3;
-
-    // AO at half the input resolution.
-    bool half_resolution = true;
-
-    // Where the normal comes from (projected onto each slice).
-    normal_source normals = normal_source::gbuffer_world;
 };
 
 // ---------------------------------------------------------------------------------
@@ -506,19 +273,12 @@ struct blur_params {
     static constexpr int denoise_radius = 2;
     static constexpr std::array<float, denoise_radius + 1> denoise_weights{1.0f, 1.0f, 0.5f};
 
-    // Which blur runs (see blur_mode). DESIGN.md default: bilateral.
-    blur_mode mode = blur_mode::bilateral;
-
-    // The bilateral blur's depth term (see bilateral_depth). DESIGN.md default: linear;
-    // the seeds' form is seed_raw.
-    bilateral_depth depth = bilateral_depth::linear;
-
-    // depth == seed_raw: weight · exp(−|Δ raw depth| · raw_depth_k). Seed: 1000.
+    // The variant's blur_depth bilateral_depth::seed_raw: weight · exp(−|Δ raw depth| · raw_depth_k). Seed: 1000.
     // 0 turns the depth term off (a plain Gaussian).
     static constexpr float_range raw_depth_k_range{0.0f, 1e6f, false};
     float raw_depth_k = 1000.0f;
 
-    // depth == linear: weight · exp(−|Δz_view| · linear_sharpness), per world unit. The
+    // blur_depth bilateral_depth::linear: weight · exp(−|Δz_view| · linear_sharpness), per world unit. The
     // denoise filter and the depth-aware upsample use the same term.
     // 10 (ours): a step of 0.1 world units gets weight e^-1 ≈ 0.37. 0 turns it off.
     // A sharpness is an inverse length, so a scene in micrometres needs one in the
@@ -539,16 +299,12 @@ struct blur_params {
 inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
 {
     using detail::field;
-    using detail::require_in;
     using P = ssao_params;
-    require_in(field(prefix, "samples"), p.samples, P::samples_range);
     require_in(field(prefix, "radius"), p.radius, P::radius_range);
     require_in(field(prefix, "bias"), p.bias, P::bias_range);
-    names::require_listed(ssao_output_names, p.output, field(prefix, "output"));
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
     require_in(field(prefix, "power"), p.power, P::power_range);
     require_in(field(prefix, "intensity"), p.intensity, P::intensity_range);
-    names::require_listed(ssao_range_check_names, p.range_check, field(prefix, "range_check"));
 
     const auto& len = P::kernel_name_length_range;
     bool well_formed = p.kernel.size() >= static_cast<std::size_t>(len.lo) &&
@@ -561,177 +317,55 @@ inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
                  " characters of a-z, 0-9 and _, e.g. crytek");
 
     require_in(field(prefix, "noise_size"), p.noise_size, P::noise_size_range);
-    names::require_listed(normal_source_names, p.normals, field(prefix, "normals"));
 }
 
 inline void validate(const gtao_params& p, std::string_view prefix = "gtao")
 {
     using detail::field;
-    using detail::require_in;
     using P = gtao_params;
     require_in(field(prefix, "radius"), p.radius, P::radius_range);
     require_in(field(prefix, "thickness_bias"), p.thickness_bias, P::thickness_bias_range);
     require_in(field(prefix, "falloff_range"), p.falloff_range, P::falloff_range_range);
     require_in(field(prefix, "thin_occluder"), p.thin_occluder, P::thin_occluder_range);
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
-    require_in(field(prefix, "slices"), p.slices, P::slices_range);
-    require_in(field(prefix, "steps"), p.steps, P::steps_range);
-    names::require_listed(normal_source_names, p.normals, field(prefix, "normals"));
 }
 
 inline void validate(const vbao_params& p, std::string_view prefix = "vbao")
 {
     using detail::field;
-    using detail::require_in;
     using P = vbao_params;
     require_in(field(prefix, "radius"), p.radius, P::radius_range);
     require_in(field(prefix, "thickness"), p.thickness, P::thickness_range);
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
-    require_in(field(prefix, "slices"), p.slices, P::slices_range);
-    require_in(field(prefix, "steps"), p.steps, P::steps_range);
-    names::require_listed(normal_source_names, p.normals, field(prefix, "normals"));
 }
 
 inline void validate(const blur_params& p, std::string_view prefix = "blur")
 {
     using detail::field;
-    using detail::require_in;
     using P = blur_params;
-    names::require_listed(blur_mode_names, p.mode, field(prefix, "mode"));
-    names::require_listed(bilateral_depth_names, p.depth, field(prefix, "depth"));
     require_in(field(prefix, "raw_depth_k"), p.raw_depth_k, P::raw_depth_k_range);
     require_in(field(prefix, "linear_sharpness"), p.linear_sharpness, P::linear_sharpness_range);
 }
 
 // ---------------------------------------------------------------------------------
-// Presets
+// All passes
 // ---------------------------------------------------------------------------------
 
-// A pass's settings together with the blur that follows it.
-struct ssao_preset {
-    const char* name;
+// The run-time settings of every pass a chain may run: a variant reads the ones of its
+// technique and blur (chain_inputs.hpp packs them), so one value serves any variant.
+struct ao_settings {
     ssao_params ssao;
-    blur_params blur;
-};
-struct gtao_preset {
-    const char* name;
     gtao_params gtao;
+    vbao_params vbao;
     blur_params blur;
 };
 
-inline void validate(const ssao_preset& p)
+inline void validate(const ao_settings& s)
 {
-    validate(p.ssao, "ssao");
-    validate(p.blur, "blur");
+    validate(s.ssao, "ssao");
+    validate(s.gtao, "gtao");
+    validate(s.vbao, "vbao");
+    validate(s.blur, "blur");
 }
-inline void validate(const gtao_preset& p)
-{
-    validate(p.gtao, "gtao");
-    validate(p.blur, "blur");
-}
-
-namespace presets {
-
-// The seeds' blur: 'quality' bilateral, 7 taps, depth term exp(−|Δ raw depth| · 1000).
-inline blur_params taos_quality_blur()
-{
-    blur_params b;
-    b.mode = blur_mode::bilateral;
-    b.depth = bilateral_depth::seed_raw;
-    b.raw_depth_k = 1000.0f;
-    return b;
-}
-
-// Taos SSAOPass (seeds 000, 002): 16 crytek samples, 4×4 noise, half resolution,
-// world-space G-buffer normals, range check 1 − smoothstep(0, radius, |Δz|), output
-// clamp(1 − occlusion/N · strength, 0, 1), then the bilateral 'quality' blur on raw
-// depth × 1000. The seeds give no radius, bias or strength: 0.5, 0.025 and 1.0 are ours
-// (Unique Engine's radius and bias, and the unscaled average).
-inline ssao_preset taos_ssao()
-{
-    ssao_preset p{"taos_ssao", {}, taos_quality_blur()};
-    p.ssao.samples = 16;
-    p.ssao.radius = 0.5f;     // ours
-    p.ssao.bias = 0.025f;     // ours
-    p.ssao.strength = 1.0f;   // ours
-    p.ssao.output = ssao_output::strength;
-    p.ssao.range_check = ssao_range_check::taos;
-    p.ssao.kernel = "crytek";
-    p.ssao.noise_size = 4;
-    p.ssao.half_resolution = true;
-    p.ssao.normals = normal_source::gbuffer_world;
-    p.ssao.point_cloud_fallback = false;
-    return p;
-}
-
-// Taos GTAOPass (seed 001): radius 1.0, thickness bias 0.1, strength exponent 2.0, and
-// "the same separable bilateral / box-blur pipelines as SSAO" — the 'quality' blur.
-// Slices × steps are not in the seed: 2 × 3 is DESIGN.md's default (ours). Half
-// resolution and G-buffer world normals are assumed from Taos' SSAO pass.
-inline gtao_preset taos_gtao()
-{
-    gtao_preset p{"taos_gtao", {}, taos_quality_blur()};
-    p.gtao.radius = 1.0f;
-    p.gtao.thickness_bias = 0.1f;
-    p.gtao.falloff_range = 0.0f;  // seed 001: a hard cut-off
-    p.gtao.thin_occluder = 0.0f;   // seed 001: plain distance
-    p.gtao.strength = 2.0f;
-    p.gtao.slices = 2;  // ours (DESIGN.md default)
-    p.gtao.steps = 3;   // ours (DESIGN.md default)
-    p.gtao.half_resolution = true;
-    p.gtao.normals = normal_source::gbuffer_world;
-    return p;
-}
-
-// Unique Engine UeSSAOPass (seed 003): radius 0.5, bias 0.025, power 1.0, intensity 1.0,
-// 32 hemisphere samples, view-space normals from its normal pre-pass, output
-// pow(1 − occlusion/N, power) mixed by intensity, then a bilateral blur "comparing depth
-// differences". Not stated by the seed, so ours: the blur's depth term (linear view
-// depth, sharpness 10 per world unit), the range check (Taos'), the crytek kernel, the
-// 4×4 noise tile and half resolution.
-inline ssao_preset unique_engine_ssao()
-{
-    ssao_preset p{"unique_engine_ssao", {}, {}};
-    p.ssao.samples = 32;
-    p.ssao.radius = 0.5f;
-    p.ssao.bias = 0.025f;
-    p.ssao.output = ssao_output::power_intensity;
-    p.ssao.power = 1.0f;
-    p.ssao.intensity = 1.0f;
-    p.ssao.range_check = ssao_range_check::taos;  // ours
-    p.ssao.kernel = "crytek";                     // ours
-    p.ssao.noise_size = 4;                        // ours
-    p.ssao.half_resolution = true;                // ours
-    p.ssao.normals = normal_source::gbuffer_view;
-    p.blur.mode = blur_mode::bilateral;
-    p.blur.depth = bilateral_depth::linear;       // ours
-    p.blur.linear_sharpness = 10.0f;              // ours
-    return p;
-}
-
-// The point-cloud viewer's ssao.wgsl (seed 004): 64 samples, 4×4 noise, range check
-// smoothstep(0, 1, radius / |Δz|), ao = 1 − occlusion/64 (the strength form with
-// strength 1), full resolution, normals reconstructed from depth, the point-cloud
-// fallback on, no blur. Its radius and bias are uniforms without values in the seed:
-// 0.5 and 0.025 are ours.
-inline ssao_preset pointcloud_viewer_ssao()
-{
-    ssao_preset p{"pointcloud_viewer_ssao", {}, {}};
-    p.ssao.samples = 64;
-    p.ssao.radius = 0.5f;   // ours
-    p.ssao.bias = 0.025f;   // ours
-    p.ssao.output = ssao_output::strength;
-    p.ssao.strength = 1.0f;
-    p.ssao.range_check = ssao_range_check::seed004;
-    p.ssao.kernel = "crytek";  // ours (the seed only says "64 hemisphere samples")
-    p.ssao.noise_size = 4;
-    p.ssao.half_resolution = false;
-    p.ssao.normals = normal_source::reconstructed;
-    p.ssao.point_cloud_fallback = true;
-    p.blur.mode = blur_mode::none;
-    return p;
-}
-
-} // namespace presets
 
 } // namespace aogen

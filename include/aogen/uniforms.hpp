@@ -7,7 +7,7 @@
 //
 //     aogen::uniforms::camera cam{world_to_view, aogen::perspective(0.577f, 16 / 9.f, 0.1f, 100)};
 //     auto kernel = aogen::kernel::crytek(16, 1);
-//     std::vector<uint8_t> bytes = aogen::uniforms::pack_ssao(preset.ssao, cam, kernel,
+//     std::vector<uint8_t> bytes = aogen::uniforms::pack_ssao(aogen::ssao_params{}, cam, kernel,
 //                                                             {960, 540}, aogen::layout::rules::std140);
 //
 // Blocks:
@@ -23,6 +23,7 @@
 #include "layout_writer.hpp"
 #include "math.hpp"
 #include "params.hpp"
+#include "variant.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -47,7 +48,7 @@ inline std::vector<layout::member_desc> camera_members()
 
 inline layout::block_desc ssao_block(int samples)
 {
-    require_range("ssao block samples", samples, ssao_params::samples_range.lo, ssao_params::samples_range.hi);
+    require_in("ssao block samples", samples, variant::ssao_samples_range);
     layout::struct_desc s{"SsaoUniforms", camera_members()};
     for (const char* name : {"radius", "bias", "strength", "power", "intensity"}) s.members.push_back({name, "float"});
     s.members.push_back({"kernel", "vec4", static_cast<uint32_t>(samples)});
@@ -103,16 +104,17 @@ inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, i
 
 } // namespace detail
 
-// SsaoUniforms bytes. `kernel` must hold p.samples samples; `target_size` is the AO
-// target's size in pixels (half the screen at half resolution).
+// SsaoUniforms bytes. `kernel` holds the variant's samples (its size is the block's N, in
+// variant::ssao_samples_range); `target_size` is the AO target's size in pixels (half the
+// screen at half resolution).
 inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, const std::vector<vec4>& kernel,
                                       vec2 target_size, layout::rules rules)
 {
     validate(p);
-    if (kernel.size() != static_cast<size_t>(p.samples))
-        fail("ssao kernel", std::to_string(kernel.size()) + " samples given",
-             "valid: ssao.samples = " + std::to_string(p.samples) + " samples");
-    layout::writer w(layout::compute(ssao_block(p.samples), rules));
+    const int_range n = variant::ssao_samples_range;
+    if (kernel.size() < size_t(n.lo) || kernel.size() > size_t(n.hi))
+        fail("ssao kernel", std::to_string(kernel.size()) + " samples given", "valid: " + to_string(n) + " samples, the variant's ssao_samples");
+    layout::writer w(layout::compute(ssao_block(int(kernel.size())), rules));
     detail::set_camera(w, cam, target_size, p.noise_size);
     w.set("radius", p.radius);
     w.set("bias", p.bias);

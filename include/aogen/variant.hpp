@@ -31,11 +31,10 @@
 //   removes the code outright, so the saving is real in every target language.
 #pragma once
 
+#include "axes.hpp"
 #include "error.hpp"
-#include "math.hpp"
 #include "names.hpp"
-#include "params.hpp"
-#include "stages.hpp"
+#include "range.hpp"
 
 #include <algorithm>
 #include <array>
@@ -46,53 +45,19 @@
 
 namespace aogen {
 
-enum class technique { ssao, gtao, vbao };
-inline constexpr std::array<enum_name<technique>, 3> technique_names{{
-    {technique::ssao, "ssao"},
-    {technique::gtao, "gtao"},
-    {technique::vbao, "vbao"}, // visibility bitmask (Therrien et al. 2023)
-}};
-
-// Whether technique `t` works in slices and steps per side (GTAO's horizons, VBAO's
-// bitmasks); SSAO counts kernel samples instead. The two share variant::gtao_slices and
-// variant::gtao_steps, their name token <S>x<N> and quality.hpp's presets.
-inline constexpr bool has_slices(technique t) { return t == technique::gtao || t == technique::vbao; }
-
-enum class pipeline_stage { compute, fragment };
-inline constexpr std::array<enum_name<pipeline_stage>, 2> pipeline_stage_names{{
-    {pipeline_stage::compute, "compute"},
-    {pipeline_stage::fragment, "fragment"},
-}};
-
-// The shader stage of a variant's AO pass (its fragment passes also need a vertex shader).
-inline shader_stage stage_of(pipeline_stage s)
-{
-    switch (s) {
-    case pipeline_stage::compute: return shader_stage::compute;
-    case pipeline_stage::fragment: return shader_stage::fragment;
-    }
-    names::fail_unlisted(pipeline_stage_names, s, "stage");
-}
-
-enum class projection_kind { perspective, orthographic };
-inline constexpr std::array<enum_name<projection_kind>, 2> projection_kind_names{{
-    {projection_kind::perspective, "perspective"},
-    {projection_kind::orthographic, "orthographic"},
-}};
-
-
-inline constexpr std::array<enum_name<depth_convention>, 3> depth_convention_names{{
-    {depth_convention::standard, "standard"},
-    {depth_convention::reversed, "reversed"},
-    {depth_convention::reversed_infinite, "reversed_infinite"},
-}};
-
-// Every axis of a variant, with DESIGN.md's defaults.
+// Every axis of a variant, with DESIGN.md's defaults. The enums are axes.hpp's; the counts'
+// ranges sit beside them, as params.hpp's ranges sit beside its fields.
 struct variant {
     technique tech = technique::ssao;
-    int ssao_samples = 16;     // ssao: 1..256
-    int gtao_slices = 2;       // gtao, vbao (has_slices): 1..16
-    int gtao_steps = 3;        // gtao, vbao: steps per side, 1..16
+    // SSAO's kernel samples per pixel, N. Taos: 16, Unique Engine: 32, ssao.wgsl: 64.
+    static constexpr int_range ssao_samples_range{1, 256};
+    int ssao_samples = 16;
+    // GTAO's and VBAO's (has_slices) slice directions per pixel, rotated per pixel by noise,
+    // and horizon samples per side of each slice. DESIGN.md defaults: 2 and 3.
+    static constexpr int_range gtao_slices_range{1, 16};
+    int gtao_slices = 2;
+    static constexpr int_range gtao_steps_range{1, 16};
+    int gtao_steps = 3;
     blur_mode blur = blur_mode::bilateral;
     bilateral_depth blur_depth = bilateral_depth::linear; // bilateral only
     normal_source normals = normal_source::gbuffer_world;
@@ -101,7 +66,10 @@ struct variant {
     projection_kind projection = projection_kind::perspective;
     bool half_resolution = true;
     pipeline_stage stage = pipeline_stage::compute;
-    int workgroup_x = 8, workgroup_y = 8; // compute only: 1..32 each, at most 1024 invocations
+    // Compute only: the workgroup's size, each side in range, at most 1024 invocations.
+    static constexpr int_range workgroup_side_range{1, 32};
+    static constexpr int max_workgroup_invocations = 1024;
+    int workgroup_x = 8, workgroup_y = 8;
     ssao_range_check range_check = ssao_range_check::taos; // ssao only
     ssao_output output = ssao_output::strength;            // ssao only
     // 16-bit floats for the AO pass's arithmetic where its precision allows it (GTAO's
@@ -134,12 +102,9 @@ inline void validate(const variant& v)
 {
     ++detail::validations();
     names::require_listed(technique_names, v.tech, "technique");
-    require_range("ssao samples", v.ssao_samples, ssao_params::samples_range.lo, ssao_params::samples_range.hi);
-    require_range("gtao slices", v.gtao_slices, gtao_params::slices_range.lo, gtao_params::slices_range.hi);
-    require_range("gtao steps", v.gtao_steps, gtao_params::steps_range.lo, gtao_params::steps_range.hi);
-    static_assert(vbao_params::slices_range.lo == gtao_params::slices_range.lo && vbao_params::slices_range.hi == gtao_params::slices_range.hi &&
-                      vbao_params::steps_range.lo == gtao_params::steps_range.lo && vbao_params::steps_range.hi == gtao_params::steps_range.hi,
-                  "vbao shares gtao's slice and step fields, so their ranges must agree");
+    require_in("ssao samples", v.ssao_samples, variant::ssao_samples_range);
+    require_in("gtao slices", v.gtao_slices, variant::gtao_slices_range);
+    require_in("gtao steps", v.gtao_steps, variant::gtao_steps_range);
     names::require_listed(blur_mode_names, v.blur, "blur");
     names::require_listed(bilateral_depth_names, v.blur_depth, "bilateral depth");
     names::require_listed(normal_source_names, v.normals, "normals");
@@ -149,11 +114,12 @@ inline void validate(const variant& v)
     names::require_listed(ssao_range_check_names, v.range_check, "range check");
     names::require_listed(ssao_output_names, v.output, "output");
     names::require_listed(upsample_mode_names, v.upsample, "upsample");
-    require_range("workgroup x", v.workgroup_x, 1, 32);
-    require_range("workgroup y", v.workgroup_y, 1, 32);
-    if (v.workgroup_x * v.workgroup_y > 1024)
-        fail("workgroup", std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y) + " is over 1024 invocations",
-             "valid: x * y <= 1024");
+    require_in("workgroup x", v.workgroup_x, variant::workgroup_side_range);
+    require_in("workgroup y", v.workgroup_y, variant::workgroup_side_range);
+    if (v.workgroup_x * v.workgroup_y > variant::max_workgroup_invocations)
+        fail("workgroup", std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y) + " is over " +
+                              std::to_string(variant::max_workgroup_invocations) + " invocations",
+             "valid: x * y <= " + std::to_string(variant::max_workgroup_invocations));
     if (v.point_cloud_fallback && v.tech != technique::ssao)
         fail("point-cloud fallback", std::string("is an SSAO feature (seed 004), not available with ") + names::name_of(technique_names, v.tech, "technique"),
              "valid: off with gtao and vbao");

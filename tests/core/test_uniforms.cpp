@@ -3,6 +3,7 @@
 // layout rules give — checked here against offsets worked out by hand from the rules,
 // and against a byte image assembled independently of the writer.
 #include <aogen/kernel.hpp>
+#include <aogen/presets.hpp>
 #include <aogen/uniforms.hpp>
 
 #include <catch2/catch.hpp>
@@ -57,7 +58,7 @@ TEST_CASE("seed 004's SsaoUniform is 144 bytes with the seed's offsets under eve
 
 TEST_CASE("seed 004's SsaoUniform bytes equal an independently assembled image", "[uniforms]")
 {
-    ssao_params p = presets::pointcloud_viewer_ssao().ssao;
+    ssao_params p = presets::pointcloud_viewer_ssao().settings.ssao;
     p.radius = 0.75f;
     p.bias = 0.03125f;
     mat4 proj;
@@ -90,12 +91,12 @@ TEST_CASE("Taos SSAO block: sizes and offsets worked out from each rule set", "[
 
 TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[uniforms]")
 {
-    const ssao_preset preset = presets::taos_ssao();
-    const std::vector<vec4> kernel = kernel::crytek(16, 1);
+    const preset taos = presets::taos_ssao();
+    const std::vector<vec4> kernel = kernel::crytek(taos.variant.ssao_samples, 1);
     mat4 proj;
     std::memcpy(&proj, simple_proj, sizeof proj);
     const uniforms::camera cam{mat4{}, proj};
-    const std::vector<uint8_t> bytes = uniforms::pack_ssao(preset.ssao, cam, kernel, {960, 540}, rules::std140);
+    const std::vector<uint8_t> bytes = uniforms::pack_ssao(taos.settings.ssao, cam, kernel, {960, 540}, rules::std140);
     REQUIRE(bytes.size() == 496);
     CHECK(float_at(bytes, 0) == 1.0f);                 // proj[0][0]
     CHECK(float_at(bytes, 64 + 4 * 11) == simple_inv_proj[11]);
@@ -120,13 +121,13 @@ TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[unifor
     CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 228);
     CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 240);
     const std::vector<uint8_t> bytes =
-        uniforms::pack_gtao(presets::taos_gtao().gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
+        uniforms::pack_gtao(presets::taos_gtao().settings.gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
     CHECK(float_at(bytes, 208) == 1.0f);  // radius (seed 001)
     CHECK(float_at(bytes, 212) == 0.1f);  // thickness bias
     CHECK(float_at(bytes, 216) == 2.0f);  // strength exponent
     CHECK(float_at(bytes, 220) == 0.0f);  // falloff range: seed 001's hard cut-off
     CHECK(float_at(bytes, 224) == 0.0f);  // thin-occluder compensation: none
-    gtao_params g = presets::taos_gtao().gtao;
+    gtao_params g = presets::taos_gtao().settings.gtao;
     g.falloff_range = 0.625f, g.thin_occluder = 1.5f;
     const std::vector<uint8_t> tuned = uniforms::pack_gtao(g, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
     CHECK(float_at(tuned, 220) == 0.625f);
@@ -152,15 +153,19 @@ TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, str
     CHECK_THROWS_WITH(uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140), Catch::Contains("vbao.thickness"));
 }
 
-TEST_CASE("Packing rejects a kernel of the wrong size and invalid params", "[uniforms]")
+TEST_CASE("Packing sizes the SSAO block by its kernel and rejects kernels out of range and invalid params", "[uniforms]")
 {
-    const ssao_preset preset = presets::taos_ssao();
+    const ssao_params ssao = presets::taos_ssao().settings.ssao;
     const uniforms::camera cam{mat4{}, perspective(1, 1, 1, 3)};
-    CHECK_THROWS_WITH(uniforms::pack_ssao(preset.ssao, cam, kernel::crytek(8, 1), {960, 540}, rules::std140),
-                      Catch::Contains("ssao kernel") && Catch::Contains("16"));
-    ssao_params bad = preset.ssao;
+    // The kernel is the variant's samples: its size is the block's N.
+    CHECK(uniforms::pack_ssao(ssao, cam, kernel::crytek(8, 1), {960, 540}, rules::std140).size() == 240 + 8 * 16);
+    CHECK(uniforms::pack_ssao(ssao, cam, kernel::crytek(256, 1), {960, 540}, rules::std140).size() == 240 + 256 * 16);
+    CHECK_THROWS_WITH(uniforms::pack_ssao(ssao, cam, std::vector<vec4>(257), {960, 540}, rules::std140),
+                      Catch::Contains("ssao kernel: 257 samples given") && Catch::Contains("valid: 1..256"));
+    CHECK_THROWS_WITH(uniforms::pack_ssao(ssao, cam, {}, {960, 540}, rules::std140), Catch::Contains("ssao kernel: 0 samples given"));
+    ssao_params bad = ssao;
     bad.radius = -1;
     CHECK_THROWS_WITH(uniforms::pack_ssao(bad, cam, kernel::crytek(16, 1), {960, 540}, rules::std140),
                       Catch::Contains("ssao.radius"));
-    CHECK_THROWS_AS(uniforms::pack_ssao(preset.ssao, cam, kernel::crytek(16, 1), {0, 540}, rules::std140), aogen::error);
+    CHECK_THROWS_AS(uniforms::pack_ssao(ssao, cam, kernel::crytek(16, 1), {0, 540}, rules::std140), aogen::error);
 }

@@ -7,6 +7,7 @@
 // changed constant — are permanent tests: the comparison must see them.
 #include "wgsl_support.hpp"
 
+#include <aogen/presets.hpp>
 #include <aogen/uniforms.hpp>
 
 #include <iostream>
@@ -149,7 +150,7 @@ TEST_CASE("wgsl: seed 004's variant has the seed's texture and sampler types, it
     CHECK(b.members[2].type == "float");
     CHECK(b.members[4].type == "vec2");
     CHECK(seed.size == 144);
-    CHECK(uniforms::pack_pointcloud(presets::pointcloud_viewer_ssao().ssao, perspective(0.6f, 1.5f, 0.1f, 100.0f), layout::rules::wgsl_uniform).size() ==
+    CHECK(uniforms::pack_pointcloud(presets::pointcloud_viewer_ssao().settings.ssao, perspective(0.6f, 1.5f, 0.1f, 100.0f), layout::rules::wgsl_uniform).size() ==
           144);
 }
 

@@ -69,14 +69,11 @@ inline std::string clocks_text(const clock_record& c)
     return fixed(c.median, 0) + " MHz median, " + fixed(c.min, 0) + "–" + fixed(c.max, 0) + " over " + std::to_string(c.samples) + " readings";
 }
 
-} // namespace detail
-
-inline std::string report_markdown(const report_data& d, const report_meta& meta, const std::map<std::string, strip_file>& strips)
+// How it was measured: device, scenes, reference, timing, clocks, and whether the GPU's
+// timestamps kept time.
+inline void write_measurement(std::ostream& md, const report_data& d, const report_meta& meta)
 {
-    using detail::fixed;
-    std::ostringstream md;
     const scene_record& first = d.scenes.front();
-    md << "# aogen report: AO error against run time\n\n";
     if (!meta.complete) md << "**Partial report**: written after scene " << d.scenes.size() << "; the run goes on (or was interrupted).\n\n";
     md << "- Device: **" << d.device << "**";
     if (d.max_sm_mhz > 0) md << " (maximum SM clock " << fixed(d.max_sm_mhz, 0) << " MHz)";
@@ -106,6 +103,11 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
            << (gpu / wall > 0.8 && gpu / wall < 1.02 ? ": the GPU was kept busy, and its timestamps keep time\n"
                                                      : ": far from 100 %, so either the GPU idled inside the rounds or its timestamps do not keep time — read the times with care\n");
     md << "- Command: `" << meta.command << "`\n\n";
+}
+
+// What each column means, and the plot.
+inline void write_how_to_read(std::ostream& md)
+{
     md << "**How to read it.** Error is the RMSE of the variant's AO against the ray-traced reference over the pixels that show "
           "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution variants are scored at "
           "full resolution as displayed: through their depth-aware upsample pass, or, for `-nearest` variants, after nearest "
@@ -119,7 +121,11 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
           "scenes), with how far the farthest lay outside [0, 1]; the output itself is always finite and in range. "
           "★ marks a Pareto-optimal variant: no other variant is both at least as fast and at least as accurate.\n\n";
     md << "![error against time](error_vs_time.png)\n\n";
+}
 
+// Every variant, fastest first, with its time, floor, errors and raw counts.
+inline void write_variants(std::ostream& md, const report_data& d)
+{
     md << "## Variants, fastest first\n\n";
     md << "| variant | ms | p10–p90 | floor ms | × floor | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
     md << "|---|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|---:|---:|\n";
@@ -130,7 +136,11 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
            << " | " << (v.pareto_calibrated ? "★" : "") << " | " << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
            << " | " << detail::raw_range(v.raw, v.raw_measured) << " |\n";
     }
+}
 
+// The scenes: size, radius, valid pixels, the reference's own noise, clocks, strips.
+inline void write_scenes(std::ostream& md, const report_data& d, const std::map<std::string, strip_file>& strips)
+{
     md << "\n## Scenes\n\n";
     md << "The reference's own noise (RMS of the per-pixel Monte-Carlo standard error) adds to a variant's RMSE in quadrature; "
           "it must stay well below the errors above.\n\n";
@@ -155,7 +165,11 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     md << "Each scene's strip shows, per row, reference | variant (default parameters) | |variant − reference| (black 0, yellow ≥ "
        << fixed(heat_full_scale, 2) << "; background in blue-grey), for the variants Pareto-optimal on that scene by time and "
           "calibrated error, fastest first.\n";
+}
 
+// Per scene, every variant that ran on it.
+inline void write_per_scene(std::ostream& md, const report_data& d, const std::map<std::string, strip_file>& strips)
+{
     md << "\n## Per scene\n\n";
     md << "Columns: median ms and p10–p90; time / fetch floor; default RMSE, MAE, mean signed error (> 0: too light), "
           "99th-percentile |error|; calibrated RMSE and its power p; raw NaN/Inf and out-of-range values (all passes).\n";
@@ -182,7 +196,11 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
                << " |\n";
         }
     }
+}
 
+// What leaving the point-cloud fallback out saves on mesh-only scenes.
+inline void write_feature_saving(std::ostream& md, const report_data& d)
+{
     md << "\n## Leaving features out\n\n";
     if (d.savings.empty()) md << "No SSAO variant without the point-cloud fallback, or no mesh-only scene: nothing to compare.\n";
     else {
@@ -202,7 +220,11 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
         for (size_t i = 0; i < d.savings.front().left_out.size(); ++i) md << (i ? "; " : "") << d.savings.front().left_out[i];
         md << ".\n";
     }
+}
 
+// The runs that did not happen, grouped by why.
+inline void write_not_run(std::ostream& md, const report_data& d)
+{
     std::map<std::string, std::vector<std::string>> skipped; // reason → "variant on scene"
     for (const variant_record& v : d.variants)
         for (size_t s = 0; s < v.runs.size(); ++s)
@@ -215,6 +237,21 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
             md << (entry.second.size() > 3 ? ", …" : "") << ")\n";
         }
     }
+}
+
+} // namespace detail
+
+inline std::string report_markdown(const report_data& d, const report_meta& meta, const std::map<std::string, strip_file>& strips)
+{
+    std::ostringstream md;
+    md << "# aogen report: AO error against run time\n\n";
+    detail::write_measurement(md, d, meta);
+    detail::write_how_to_read(md);
+    detail::write_variants(md, d);
+    detail::write_scenes(md, d, strips);
+    detail::write_per_scene(md, d, strips);
+    detail::write_feature_saving(md, d);
+    detail::write_not_run(md, d);
     return md.str();
 }
 

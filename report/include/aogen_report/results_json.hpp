@@ -26,7 +26,7 @@
 // "non_finite" of the metrics counts the shipped output, which the guard keeps finite.
 #pragma once
 
-#include "run.hpp"
+#include "records.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <aogen/params.hpp>
+#include <aogen/presets.hpp>
 #include <aogen/vulkan/chain.hpp>
 #include <aogen_scenes/scene.hpp>
 
@@ -55,7 +56,8 @@ struct radius_range {
 inline radius_range ao_radius_range()
 {
     const double sharpness = aogen::blur_params{}.linear_sharpness;          // at R = 1
-    const double bias_ratio = aogen::presets::taos_ssao().ssao.bias / aogen::presets::taos_ssao().ssao.radius;
+    const aogen::ssao_params taos = aogen::presets::taos_ssao().settings.ssao;
+    const double bias_ratio = taos.bias / taos.radius;
     double hi = std::min(double(aogen::ssao_params::radius_range.hi),
                          aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
     hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / bias_ratio);
@@ -76,9 +78,9 @@ inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, c
 {
     const float R = float(s.ao_radius);
     aogen::vulkan::chain_settings c;
-    const aogen::ssao_preset ssao = v.output == aogen::ssao_output::power_intensity ? aogen::presets::unique_engine_ssao()
-                                                                                    : aogen::presets::taos_ssao();
-    c.ssao = ssao.ssao;
+    const aogen::preset ssao = v.output == aogen::ssao_output::power_intensity ? aogen::presets::unique_engine_ssao()
+                                                                              : aogen::presets::taos_ssao();
+    c.ssao = ssao.settings.ssao;
     c.ssao.bias = c.ssao.bias / c.ssao.radius * R;
     c.ssao.radius = R;
     c.gtao = aogen::gtao_params{}; // the tuned defaults (params.hpp)

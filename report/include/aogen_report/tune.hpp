@@ -84,7 +84,7 @@ inline std::vector<tune_axis> technique_axes(const aogen::variant& v)
              c.ssao.bias *= radius / c.ssao.radius;
              c.ssao.radius = radius;
          }},
-        {{"strength", 0.5, 8.0}, [] { return double(aogen::presets::taos_ssao().ssao.strength); },
+        {{"strength", 0.5, 8.0}, [] { return double(aogen::presets::taos_ssao().settings.ssao.strength); },
          [](settings& c, float, double x) { c.ssao.strength = float(x); }},
     };
 }
