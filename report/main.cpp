@@ -238,7 +238,7 @@ int main(int argc, char** argv)
     app.add_option("--python", python, "the Python that runs it (with matplotlib)")->capture_default_str();
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
     app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
-    app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch floor");
+    app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch and bandwidth floors");
     std::string suite, cases;
     bool check = false;
     app.add_option("--suite", suite, "run a suite instead of the error-against-time report: stability")

@@ -1,8 +1,9 @@
-// The fetch floor (report/floor/, aogen_report/fetch_floor.hpp): for every variant
-// of the default matrix, its floor is a list of compute shaders that glslang compiles and
+// The floors (report/floor/, aogen_report/fetch_floor.hpp): for every variant of the default
+// matrix, each of its two floors is a list of compute shaders that glslang compiles and
 // spirv-val accepts, one per pass of the variant, declaring exactly the variant's compute
-// resources (so it binds like the variant), and each smaller than the pass it stands in
-// for (the shading is gone).
+// resources (so it binds like the variant), each smaller than the pass it stands in for (the
+// shading is gone), and the bandwidth floor's smaller than the fetch floor's (it reads each
+// input once, not at every sample).
 #include <aogen_report/fetch_floor.hpp>
 
 #include <aogen/compile.hpp>
@@ -32,31 +33,44 @@ uint32_t instructions(const aogen::codegen::shader_source& s, std::map<std::stri
 
 } // namespace
 
-TEST_CASE("report: every default-matrix variant's fetch floor compiles, binds like the variant and is smaller")
+TEST_CASE("report: every default-matrix variant's floors compile, bind like the variant and are smaller, the bandwidth floor the smallest")
 {
+    using aogen_report::floor_kind;
     std::map<std::string, uint32_t> compiled;
     for (const aogen::variant& v : aogen::default_matrix()) {
         INFO(aogen::to_name(v));
-        const std::vector<aogen::codegen::shader_source> floor = aogen_report::floor_sources(v);
+        const std::vector<aogen::codegen::shader_source> fetch = aogen_report::floor_sources(v, floor_kind::fetch);
+        const std::vector<aogen::codegen::shader_source> bandwidth = aogen_report::floor_sources(v, floor_kind::bandwidth);
         const std::vector<aogen::codegen::shader_source> twin = aogen::codegen::generate(aogen_report::floor_variant(v));
-        REQUIRE(floor.size() == twin.size());
-        REQUIRE(floor.size() == aogen::passes(v).size());
-        for (size_t i = 0; i < floor.size(); ++i) {
-            INFO(floor[i].name);
-            CHECK(floor[i].stage == aogen::shader_stage::compute);
-            CHECK(floor[i].pass == twin[i].pass);
-            CHECK(same_resources(floor[i].resources, twin[i].resources));
-            CHECK(instructions(floor[i], compiled) < instructions(twin[i], compiled));
+        REQUIRE(fetch.size() == twin.size());
+        REQUIRE(bandwidth.size() == twin.size());
+        REQUIRE(twin.size() == aogen::passes(v).size());
+        for (size_t i = 0; i < twin.size(); ++i) {
+            for (const aogen::codegen::shader_source* floor : {&fetch[i], &bandwidth[i]}) {
+                INFO(floor->name);
+                CHECK(floor->stage == aogen::shader_stage::compute);
+                CHECK(floor->pass == twin[i].pass);
+                CHECK(same_resources(floor->resources, twin[i].resources));
+                CHECK(instructions(*floor, compiled) < instructions(twin[i], compiled));
+            }
+            INFO(bandwidth[i].name);
+            CHECK(instructions(bandwidth[i], compiled) < instructions(fetch[i], compiled));
         }
     }
 }
 
 TEST_CASE("report: a floor replaces exactly the shading templates")
 {
-    CHECK(!aogen_report::floor_replacement("gtao.glsl").empty());
-    CHECK(!aogen_report::floor_replacement("common/normals.glsl").empty());
-    CHECK(aogen_report::floor_replacement("common/depth.glsl").empty());
-    CHECK(aogen_report::floor_replacement("entry_compute.glsl").empty());
+    using aogen_report::floor_kind;
+    for (floor_kind kind : {floor_kind::fetch, floor_kind::bandwidth}) {
+        for (const char* shading : {"gtao.glsl", "ssao.glsl", "vbao.glsl", "common/normals.glsl", "blur_denoise.glsl", "upsample.glsl"})
+            CHECK(!aogen_report::floor_replacement(kind, shading).empty());
+        CHECK(aogen_report::floor_replacement(kind, "common/depth.glsl").empty());
+        CHECK(aogen_report::floor_replacement(kind, "entry_compute.glsl").empty());
+    }
+    // The bandwidth floor reads the same inputs for every technique and every blur.
+    CHECK(aogen_report::floor_replacement(floor_kind::bandwidth, "ssao.glsl") == aogen_report::floor_replacement(floor_kind::bandwidth, "gtao.glsl"));
+    CHECK(aogen_report::floor_replacement(floor_kind::bandwidth, "blur_box.glsl") == aogen_report::floor_replacement(floor_kind::bandwidth, "blur_denoise.glsl"));
     // The variant's own depth and entry code stay in the floor.
     aogen::variant v;
     v.tech = aogen::technique::gtao;

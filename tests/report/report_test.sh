@@ -66,10 +66,12 @@ for s in ran:
     assert s["ms"] is not None and s["ms"] > 0, s
     assert s["ms_p10"] <= s["ms"] <= s["ms_p90"], s
     assert s["floor_ms"] is not None and s["floor_ms"] > 0, s
+    assert s["bandwidth_ms"] is not None and s["bandwidth_ms"] > 0, s
     assert len(s["raw"]) == len(s["pass_ms"]) and all(r == {"nan": 0, "inf": 0, "below_zero": 0, "above_one": 0, "max_excess": 0} for r in s["raw"]), s
 for v in a["variants"]:
     assert v["raw"]["measured"] and v["raw"]["nan"] == 0 and v["raw"]["inf"] == 0, v["name"]
     assert v["floor_ratio"] is not None and v["floor_ratio"] > 0, v["name"]
+    assert v["bandwidth_ratio"] is not None and v["bandwidth_ratio"] > 0, v["name"]
 # Each technique against the truth, end to end, two-sided (measured on lavapipe 2026-12-02):
 # the RMSE at most 1.15 x as measured, and the occlusion ratio mean(1 - AO) / mean(1 - truth)
 # within +-10 % of where it reads, so that occlusion a fifth stronger or weaker fails.

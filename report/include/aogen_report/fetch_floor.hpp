@@ -1,24 +1,29 @@
-// aogen_report/fetch_floor.hpp — each variant's fetch floor: its passes' texel fetches with
-// no arithmetic between them.
+// aogen_report/fetch_floor.hpp — each variant's two floors: its passes' texel fetches with no
+// arithmetic between them, and its passes' inputs read once.
 //
 // WHAT
-//   floor_sources(v) generates the compute shaders of v's floor: codegen::generate of v's
-//   compute twin (same axes, stage compute, no point-cloud fallback) with the templates
-//   whose arithmetic the floor drops replaced by report/floor/'s fetch-only files
-//   (floor/README.md lists them and what each fetches). Everything else — defines,
-//   bindings, the uniform block, depth and noise helpers, entry point, output image — is
-//   the variant's own, so a floor binds exactly like its variant (bound_chain, same
-//   chain_inputs) and runs on the same G-buffer in the same timing round.
-//   A variant's time over its floor's says how much its arithmetic costs beyond the
-//   memory traffic it cannot avoid: near 1 a variant is fetch-bound; far above it, either
-//   the shading is heavy or the measurement is wrong, and the report shows which.
+//   floor_sources(v, kind) generates the compute shaders of one of v's floors: codegen::
+//   generate of v's compute twin (same axes, stage compute, no point-cloud fallback) with the
+//   templates whose work the floor drops replaced by report/floor/'s files (floor/README.md
+//   lists them and what each reads). Everything else — defines, bindings, the uniform block,
+//   depth and noise helpers, entry point, output image — is the variant's own, so a floor
+//   binds exactly like its variant (bound_chain, same chain_inputs) and runs on the same
+//   G-buffer in the same timing round.
+//     floor_kind::fetch      the same fetches at the same positions as the variant's passes
+//                            (floor/*.glsl): time / floor says how much the arithmetic costs
+//                            beyond the variant's own memory traffic; near 1 it is fetch-bound.
+//     floor_kind::bandwidth  each pass's inputs read once at its own pixel and its output
+//                            written once (floor/bandwidth/*.glsl): time / bandwidth floor says
+//                            how far a variant is from the memory system itself, not from our
+//                            own fetch pattern (a scattered pattern can sit near its fetch
+//                            floor and far above this one).
 //
 //   Fragment variants' floors are compute kernels (the fetches, not the raster path);
 //   the point-cloud fallback's own ring of fetches is not in the floor, so a variant and its
 //   point-cloud twin share one floor.
 //
 // USAGE
-//     std::vector<aogen::codegen::shader_source> s = aogen_report::floor_sources(v);
+//     std::vector<aogen::codegen::shader_source> s = aogen_report::floor_sources(v, aogen_report::floor_kind::fetch);
 //     aogen::vulkan::pass_pipelines floor(ctx, "floor of " + name, aogen::pipeline_stage::compute,
 //                                         v.workgroup_x, v.workgroup_y, s, &cache);
 //     // bind with aogen::vulkan::inputs_for(v, settings, tw, th), as the variant
@@ -42,16 +47,18 @@ inline aogen::variant floor_variant(aogen::variant v)
     return v;
 }
 
+enum class floor_kind { fetch, bandwidth };
+
 // The text of floor/`name`, standing in for aogen template `path`.
 inline std::string floor_replacement_file(const std::string& name, const std::string& path)
 {
     for (const auto& t : floor_embedded::templates)
         if (t.path == name) return std::string(t.text);
-    aogen::fail("fetch floor", "no floor template " + name + " for " + path, "valid: report/floor/ holds one per replaced template");
+    aogen::fail("floor", "no floor template " + name + " for " + path, "valid: report/floor/ holds one per replaced template");
 }
 
-// The fetch-only file that stands in for aogen template `path`, or "" when it is kept.
-inline std::string floor_replacement(const std::string& path)
+// The fetch floor's stand-in for aogen template `path`, or "" when it is kept.
+inline std::string fetch_floor_replacement(const std::string& path)
 {
     const std::array<const char*, 9> replaced{"common/normals.glsl", "common/slices.glsl", "ssao.glsl",         "gtao.glsl",    "vbao.glsl",
                                               "blur_bilateral.glsl", "blur_box.glsl",      "blur_denoise.glsl", "upsample.glsl"};
@@ -62,18 +69,45 @@ inline std::string floor_replacement(const std::string& path)
     return floor_replacement_file(path.substr(path.rfind('/') + 1), path); // floor/ is flat: common/normals.glsl is normals.glsl
 }
 
-// The floor's compute shaders, one per pass of `v`, named "<variant>.floor.<pass>.comp".
-inline std::vector<aogen::codegen::shader_source> floor_sources(const aogen::variant& v)
+// The bandwidth floor's stand-in for aogen template `path`, or "" when it is kept: one file
+// for every AO pass and one for every blur, since what they must read does not depend on
+// the technique or the filter.
+inline std::string bandwidth_floor_replacement(const std::string& path)
+{
+    struct stand_in {
+        const char* replaced;
+        const char* file;
+    };
+    static constexpr stand_in stand_ins[] = {
+        {"common/normals.glsl", "bandwidth/normals.glsl"}, {"common/slices.glsl", "bandwidth/slices.glsl"},
+        {"ssao.glsl", "bandwidth/ao.glsl"},                {"gtao.glsl", "bandwidth/ao.glsl"},
+        {"vbao.glsl", "bandwidth/ao.glsl"},                {"blur_bilateral.glsl", "bandwidth/blur.glsl"},
+        {"blur_box.glsl", "bandwidth/blur.glsl"},          {"blur_denoise.glsl", "bandwidth/blur.glsl"},
+        {"upsample.glsl", "bandwidth/upsample.glsl"},
+    };
+    for (const stand_in& s : stand_ins)
+        if (path == s.replaced) return floor_replacement_file(s.file, path);
+    return "";
+}
+
+// The stand-in for aogen template `path` in a floor of `kind`, or "" when it is kept.
+inline std::string floor_replacement(floor_kind kind, const std::string& path)
+{
+    return kind == floor_kind::fetch ? fetch_floor_replacement(path) : bandwidth_floor_replacement(path);
+}
+
+// A floor's compute shaders, one per pass of `v`, named "<variant>.floor.<pass>.comp" (the
+// fetch floor) or "<variant>.bandwidth.<pass>.comp".
+inline std::vector<aogen::codegen::shader_source> floor_sources(const aogen::variant& v, floor_kind kind = floor_kind::fetch)
 {
     const aogen::variant twin = floor_variant(v);
-    const aogen::codegen::template_reader read = [](const std::string& path) {
-        const std::string floor = floor_replacement(path);
+    const aogen::codegen::template_reader read = [kind](const std::string& path) {
+        const std::string floor = floor_replacement(kind, path);
         return floor.empty() ? aogen::codegen::embedded_template(path) : floor;
     };
     std::vector<aogen::codegen::shader_source> out = aogen::codegen::generate(twin, read);
-    const std::string name = aogen::to_name(v);
-    for (aogen::codegen::shader_source& s : out)
-        s.name = name + ".floor." + aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass") + ".comp";
+    const std::string name = aogen::to_name(v) + (kind == floor_kind::fetch ? ".floor." : ".bandwidth.");
+    for (aogen::codegen::shader_source& s : out) s.name = name + aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass") + ".comp";
     return out;
 }
 

@@ -3,7 +3,7 @@
 //     std::string text = aogen_report::report_markdown(data, meta, strip_files);
 //
 // Sections: how it was measured (device, clocks, timing) and how to read it; the variants
-// sorted by time with their spread, fetch floor and time / floor, default and calibrated
+// sorted by time with their spread, fetch and bandwidth floors and time / floor, default and calibrated
 // RMSE, Pareto marks and raw NaN/Inf and out-of-range counts; the scenes with the
 // reference's own noise and the clocks seen; per scene, every variant's metrics; the
 // feature saving; what was skipped and why. `strip_files` maps a scene name
@@ -85,7 +85,7 @@ inline void write_measurement(std::ostream& md, const report_data& d, const repo
     md << "- Times: per scene, every chain bound once (device-local memory), " << fixed(d.timing.warmup_ms, 0)
        << " ms of continuous GPU work first, then " << d.timing.rounds << " rounds of "
        << (fewest == most ? std::to_string(most) : std::to_string(fewest) + "–" + std::to_string(most))
-       << " back-to-back iterations of every chain, interleaved" << (d.fetch_floor ? " with their fetch floors" : "")
+       << " back-to-back iterations of every chain, interleaved" << (d.fetch_floor ? " with their fetch and bandwidth floors" : "")
        << (d.timing.budget_ms > 0 ? " (at most " + std::to_string(d.timing.iterations) + ", as many as fit " + fixed(d.timing.budget_ms, 0) + " ms)" : "")
        << "; GPU timestamps around every pass; median and p10–p90 of the iterations\n";
     md << "- SM clock during the timed rounds: " << detail::clocks_text(d.clocks) << "\n";
@@ -116,7 +116,10 @@ inline void write_how_to_read(std::ostream& md)
           "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median (p10–p90 likewise). "
           "*Floor* is the variant's fetch floor: its passes' texel fetches at the same positions with none of the shading "
           "(report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
-          "variant is bound by its memory traffic, far above it by its arithmetic. *Raw NaN/Inf* and *raw out of [0, 1]* count "
+          "variant is bound by its memory traffic, far above it by its arithmetic. *BW floor* is its bandwidth floor: each "
+          "pass's inputs read once at its own pixel and its output written once (report/floor/bandwidth/), the least any "
+          "chain of these sizes and formats moves; *× BW* is time / bandwidth floor — how far the variant is from the "
+          "memory system itself, not from its own fetch pattern. *Raw NaN/Inf* and *raw out of [0, 1]* count "
           "the values the passes computed before the guard that keeps the output finite and in range (all passes, all "
           "scenes), with how far the farthest lay outside [0, 1]; the output itself is always finite and in range. "
           "★ marks a Pareto-optimal variant: no other variant is both at least as fast and at least as accurate.\n\n";
@@ -127,12 +130,12 @@ inline void write_how_to_read(std::ostream& md)
 inline void write_variants(std::ostream& md, const report_data& d)
 {
     md << "## Variants, fastest first\n\n";
-    md << "| variant | ms | p10–p90 | floor ms | × floor | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
-    md << "|---|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|---:|---:|\n";
+    md << "| variant | ms | p10–p90 | floor ms | × floor | BW floor ms | × BW | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|---:|---:|\n";
     for (size_t i : detail::by_time(d.variants)) {
         const variant_record& v = d.variants[i];
         md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << detail::range(v.ms_p10, v.ms_p90) << " | " << fixed(v.floor_ms, 3) << " | "
-           << fixed(v.floor_ratio, 2) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | " << fixed(v.rmse_calibrated, 4)
+           << fixed(v.floor_ratio, 2) << " | " << fixed(v.bandwidth_ms, 3) << " | " << fixed(v.bandwidth_ratio, 2) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | " << fixed(v.rmse_calibrated, 4)
            << " | " << (v.pareto_calibrated ? "★" : "") << " | " << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
            << " | " << detail::raw_range(v.raw, v.raw_measured) << " |\n";
     }
@@ -171,7 +174,7 @@ inline void write_scenes(std::ostream& md, const report_data& d, const std::map<
 inline void write_per_scene(std::ostream& md, const report_data& d, const std::map<std::string, strip_file>& strips)
 {
     md << "\n## Per scene\n\n";
-    md << "Columns: median ms and p10–p90; time / fetch floor; default RMSE, MAE, mean signed error (> 0: too light), "
+    md << "Columns: median ms and p10–p90; time / fetch floor; time / bandwidth floor; default RMSE, MAE, mean signed error (> 0: too light), "
           "99th-percentile |error|; calibrated RMSE and its power p; raw NaN/Inf and out-of-range values (all passes).\n";
     for (size_t s = 0; s < d.scenes.size(); ++s) {
         md << "\n### " << d.scenes[s].scene.name << "\n\n";
@@ -181,8 +184,8 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
             for (size_t k = 0; k < strip->second.variants.size(); ++k) md << (k ? ", " : "") << "`" << strip->second.variants[k] << "`";
             md << ".\n\n";
         }
-        md << "| variant | ms | p10–p90 | × floor | RMSE | MAE | signed | p99 | RMSE cal. | p | raw NaN/Inf | raw out of [0, 1] |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        md << "| variant | ms | p10–p90 | × floor | × BW | RMSE | MAE | signed | p99 | RMSE cal. | p | raw NaN/Inf | raw out of [0, 1] |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (size_t i : detail::by_time(d.variants)) {
             const variant_record& v = d.variants[i];
             const run_record& r = v.runs[s];
@@ -190,7 +193,7 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
             aogen::vulkan::raw_counts raw;
             for (const aogen::vulkan::raw_counts& c : r.raw) raw += c;
             md << "| `" << v.name << "` | " << fixed(r.ms.median, 3) << " | " << detail::range(r.ms.p10, r.ms.p90) << " | "
-               << fixed(r.ms.median / r.floor_ms.median, 2) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
+               << fixed(r.ms.median / r.floor_ms.median, 2) << " | " << fixed(r.ms.median / r.bandwidth_ms.median, 2) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
                << fixed(r.plain.mean_signed, 4) << " | " << fixed(r.plain.p99_abs, 3) << " | " << fixed(r.calibrated.rmse, 4) << " | "
                << fixed(r.power, 2) << " | " << detail::raw_non_finite(raw, !r.raw.empty()) << " | " << detail::raw_range(raw, !r.raw.empty())
                << " |\n";

@@ -82,6 +82,7 @@ struct run_record {
     std::vector<aogen::vulkan::spread> pass_ms;   // per pass
     aogen::vulkan::spread ms;                     // the whole chain, per iteration
     aogen::vulkan::spread floor_ms;               // its fetch floor, timed in the same rounds
+    aogen::vulkan::spread bandwidth_ms;           // its bandwidth floor, likewise
     std::vector<double> round_ms;                 // the chain's median of each timing round
     ao_readback ao;                               // as read back (default parameters)
     bool ran() const { return skipped.empty(); }
@@ -97,7 +98,8 @@ struct variant_record {
     // Summaries over the scenes it ran on.
     double rmse = std::numeric_limits<double>::quiet_NaN(), rmse_calibrated = rmse;
     double ms = rmse, ms_p10 = rmse, ms_p90 = rmse; // medians over scenes of each scene's median, p10, p90
-    double floor_ms = rmse, floor_ratio = rmse;     // median over scenes of the floor, and of time / floor
+    double floor_ms = rmse, floor_ratio = rmse;     // median over scenes of the fetch floor, and of time / floor
+    double bandwidth_ms = rmse, bandwidth_ratio = rmse; // the same of the bandwidth floor
     aogen::vulkan::raw_counts raw;                  // summed over scenes and passes
     bool raw_measured = false;                      // a diagnostic build ran (fragment passes need fragment stores)
     bool pareto = false, pareto_calibrated = false;

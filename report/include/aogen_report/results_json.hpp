@@ -13,9 +13,9 @@
 //                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
 //                   iterations, settled}],           // per round, as the budget allowed; warm-up settled
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
-//                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, rmse, rmse_calibrated,
+//                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, bandwidth_ms, bandwidth_ratio, rmse, rmse_calibrated,
 //                   raw: {measured, nan, inf, below_zero, above_one, max_excess}, pareto, pareto_calibrated,
-//                   scenes: [{scene, skipped | {ms, ms_p10, ms_p90, pass_ms, floor_ms, power,
+//                   scenes: [{scene, skipped | {ms, ms_p10, ms_p90, pass_ms, floor_ms, bandwidth_ms, power,
 //                             raw: [{nan, inf, below_zero, above_one, max_excess} per pass],
 //                             default: {rmse, mae, mean_signed, p99_abs, non_finite, pixels},
 //                             calibrated: {...}}]}],
@@ -72,6 +72,7 @@ inline nlohmann::json run_json(const run_record& r, const std::string& scene)
     e["ms_p90"] = number(r.ms.p90);
     e["pass_ms"] = passes;
     e["floor_ms"] = number(r.floor_ms.median);
+    e["bandwidth_ms"] = number(r.bandwidth_ms.median);
     e["power"] = r.power;
     e["raw"] = raw;
     e["default"] = metrics_json(r.plain);
@@ -97,6 +98,8 @@ inline nlohmann::json variant_json(const variant_record& v, const std::vector<sc
             {"ms_p90", number(v.ms_p90)},
             {"floor_ms", number(v.floor_ms)},
             {"floor_ratio", number(v.floor_ratio)},
+            {"bandwidth_ms", number(v.bandwidth_ms)},
+            {"bandwidth_ratio", number(v.bandwidth_ratio)},
             {"rmse", number(v.rmse)},
             {"rmse_calibrated", number(v.rmse_calibrated)},
             {"raw", raw},

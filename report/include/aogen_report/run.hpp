@@ -96,27 +96,28 @@ inline clock_record clocks_of(std::vector<double> mhz)
 }
 
 // Every shader a run needs of one variant, planned and generated once: as shipped (timed),
-// in diagnostic form (scored) and its fetch floor (empty for twins and without floors).
+// in diagnostic form (scored) and its two floors (empty for twins and without floors).
 struct generated_variant {
     aogen::codegen::plan shipped, diagnostic;
-    std::vector<aogen::codegen::shader_source> shipped_sources, diagnostic_sources, floor_sources;
+    std::vector<aogen::codegen::shader_source> shipped_sources, diagnostic_sources, floor_sources, bandwidth_sources;
 };
 
 inline generated_variant generate_variant(const aogen::variant& v, bool floor)
 {
     aogen::codegen::options d;
     d.diagnostics = true;
-    generated_variant g{aogen::codegen::make_plan(v), aogen::codegen::make_plan(v, d), {}, {}, {}};
+    generated_variant g{aogen::codegen::make_plan(v), aogen::codegen::make_plan(v, d), {}, {}, {}, {}};
     g.shipped_sources = aogen::codegen::generate(g.shipped);
     g.diagnostic_sources = aogen::codegen::generate(g.diagnostic);
-    if (floor) g.floor_sources = floor_sources(v);
+    if (floor) g.floor_sources = floor_sources(v, floor_kind::fetch), g.bandwidth_sources = floor_sources(v, floor_kind::bandwidth);
     return g;
 }
 
 // Every source of `g`, for one compile_all.
 inline void append_sources(const generated_variant& g, std::vector<aogen::codegen::shader_source>& out)
 {
-    for (const auto* list : {&g.shipped_sources, &g.diagnostic_sources, &g.floor_sources}) out.insert(out.end(), list->begin(), list->end());
+    for (const auto* list : {&g.shipped_sources, &g.diagnostic_sources, &g.floor_sources, &g.bandwidth_sources})
+        out.insert(out.end(), list->begin(), list->end());
 }
 
 // The compiled size of each of the variant's shaders, in chain order.
@@ -131,10 +132,10 @@ inline void count_instructions(variant_record& r, const generated_variant& g, ao
 }
 
 // One variant's pipelines for the whole run: as shipped (timed), in diagnostic form
-// (scored; none where the device cannot store from fragment shaders) and its fetch floor.
+// (scored; none where the device cannot store from fragment shaders) and its two floors.
 struct compiled_variant {
     std::unique_ptr<aogen::vulkan::chain> shipped, diagnostic;
-    std::unique_ptr<aogen::vulkan::pass_pipelines> floor; // null for twins and without floors
+    std::unique_ptr<aogen::vulkan::pass_pipelines> floor, bandwidth; // null for twins and without floors
 };
 
 inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const generated_variant& g, aogen::vulkan::spirv_cache& cache)
@@ -143,11 +144,13 @@ inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const gener
     c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, g.shipped, g.shipped_sources, &cache);
     if (g.shipped.axes().stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
         c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, g.diagnostic, g.diagnostic_sources, &cache);
-    if (!g.floor_sources.empty()) {
-        const aogen::variant f = floor_variant(g.shipped.axes());
-        c.floor = std::make_unique<aogen::vulkan::pass_pipelines>(ctx, "the fetch floor of " + g.shipped.name(), f.stage, f.workgroup_x,
-                                                                  f.workgroup_y, g.floor_sources, &cache);
-    }
+    const aogen::variant f = floor_variant(g.shipped.axes());
+    const auto floor = [&](const char* what, const std::vector<aogen::codegen::shader_source>& sources) {
+        return std::make_unique<aogen::vulkan::pass_pipelines>(ctx, std::string(what) + g.shipped.name(), f.stage, f.workgroup_x, f.workgroup_y,
+                                                               sources, &cache);
+    };
+    if (!g.floor_sources.empty()) c.floor = floor("the fetch floor of ", g.floor_sources);
+    if (!g.bandwidth_sources.empty()) c.bandwidth = floor("the bandwidth floor of ", g.bandwidth_sources);
     return c;
 }
 
@@ -178,10 +181,12 @@ inline void finish_scoring(run_record& r, const scene_record& s)
     r.summary = summarise(ao, s.truth.ao, s.truth.valid);
 }
 
-// One chain to time: which record and scene it belongs to, and whether it is the floor.
+// One chain to time: which record and scene it belongs to, and whether it is the variant
+// itself or one of its floors.
+enum class timed_as { variant, fetch_floor, bandwidth_floor };
 struct timed_chain {
     run_record* run = nullptr;
-    bool floor = false;
+    timed_as what = timed_as::variant;
     std::unique_ptr<aogen::vulkan::bound_chain> bound;
 };
 
@@ -205,8 +210,12 @@ inline void time_group(aogen::vulkan::context& ctx, std::vector<timed_chain>& ch
     scene.iterations = scene.iterations == 0 ? t.iterations : std::min(scene.iterations, t.iterations);
     for (size_t i = 0; i < chains.size(); ++i) {
         run_record& r = *chains[i].run;
-        if (chains[i].floor) {
+        if (chains[i].what == timed_as::fetch_floor) {
             r.floor_ms = t.chains[i].total;
+            continue;
+        }
+        if (chains[i].what == timed_as::bandwidth_floor) {
+            r.bandwidth_ms = t.chains[i].total;
             continue;
         }
         r.ms = t.chains[i].total;
@@ -313,21 +322,22 @@ inline void time_scene(aogen::vulkan::context& ctx, const report_settings& setti
         time_group(ctx, group, settings.timing, scene, clocks, scene_clocks);
         group.clear(), group_bytes = 0;
     };
-    const auto add = [&](run_record& run, bool floor, const aogen::vulkan::pass_pipelines& passes, const aogen::variant& v) {
+    const auto add = [&](run_record& run, timed_as what, const aogen::vulkan::pass_pipelines& passes, const aogen::variant& v) {
         const aogen::vulkan::gpu_gbuffer& g = bench.gpu(v);
         const auto [tw, th] = aogen::vulkan::target_size(v, bench.width(), bench.height());
         auto bound = std::make_unique<aogen::vulkan::bound_chain>(ctx, passes, g, aogen::vulkan::inputs_for(v, default_settings(v, scene.scene), tw, th), tw, th);
         group_bytes += output_bytes(*bound);
-        group.push_back({&run, floor, std::move(bound)});
+        group.push_back({&run, what, std::move(bound)});
     };
     for (size_t i = 0; i < out.variants.size(); ++i) {
         run_record& run = out.variants[i].runs.back();
         if (!run.ran()) continue;
         if (group_bytes > settings.bound_bytes) flush();
-        add(run, false, c.variants[i].shipped->passes(), out.variants[i].v);
-        if (c.variants[i].floor) add(run, true, *c.variants[i].floor, out.variants[i].v);
+        add(run, timed_as::variant, c.variants[i].shipped->passes(), out.variants[i].v);
+        if (c.variants[i].floor) add(run, timed_as::fetch_floor, *c.variants[i].floor, out.variants[i].v);
+        if (c.variants[i].bandwidth) add(run, timed_as::bandwidth_floor, *c.variants[i].bandwidth, out.variants[i].v);
         for (size_t t = 0; t < out.twins.size(); ++t) // the twin right after its variant
-            if (twin_of[t] == int(i) && out.twins[t].runs.back().ran()) add(out.twins[t].runs.back(), false, c.twins[t].shipped->passes(), out.twins[t].v);
+            if (twin_of[t] == int(i) && out.twins[t].runs.back().ran()) add(out.twins[t].runs.back(), timed_as::variant, c.twins[t].shipped->passes(), out.twins[t].v);
     }
     flush();
     scene.clocks = clocks_of(scene_clocks);

@@ -114,25 +114,78 @@ inline aogen::variant adapted(aogen::variant v, const aogen::scenes::camera& c)
     return aogen::canonical(v);
 }
 
-// Diagnostic chains, compiled once per variant name for the whole suite.
+// Diagnostic chains, compiled once per variant name for the whole suite. prepare() plans and
+// generates the chains a suite will run and compiles all their shaders at once, on every
+// core (spirv_cache::compile_all); get() then builds each chain's pipelines on first use.
 class chain_cache {
 public:
     chain_cache(aogen::vulkan::context& ctx, aogen::codegen::template_reader templates) : ctx_(ctx), templates_(std::move(templates)) {}
+
+    void prepare(const std::vector<aogen::variant>& variants)
+    {
+        std::vector<aogen::codegen::shader_source> sources;
+        for (const aogen::variant& v : variants) {
+            const std::string name = aogen::to_name(v);
+            if (chains_.count(name) || planned_.count(name)) continue;
+            aogen::codegen::plan p = aogen::codegen::make_plan(v, options());
+            std::vector<aogen::codegen::shader_source> s = aogen::codegen::generate(p);
+            sources.insert(sources.end(), s.begin(), s.end());
+            planned_.emplace(name, planned_chain{std::move(p), std::move(s)});
+        }
+        spirv_.compile_all(sources);
+    }
+
     const aogen::vulkan::chain& get(const aogen::variant& v)
     {
         const std::string name = aogen::to_name(v);
         auto it = chains_.find(name);
         if (it != chains_.end()) return *it->second;
-        return *chains_.emplace(name, std::make_unique<aogen::vulkan::chain>(ctx_, v, aogen::vulkan::chain_options{true, templates_}, &spirv_))
-                    .first->second;
+        auto planned = planned_.find(name);
+        if (planned == planned_.end()) prepare({v}), planned = planned_.find(name);
+        auto chain = std::make_unique<aogen::vulkan::chain>(ctx_, planned->second.plan, planned->second.sources, &spirv_);
+        planned_.erase(planned);
+        return *chains_.emplace(name, std::move(chain)).first->second;
     }
 
 private:
+    struct planned_chain {
+        aogen::codegen::plan plan;
+        std::vector<aogen::codegen::shader_source> sources;
+    };
+    aogen::codegen::options options() const
+    {
+        aogen::codegen::options o;
+        o.diagnostics = true;
+        o.templates = templates_;
+        return o;
+    }
+
     aogen::vulkan::context& ctx_;
     aogen::codegen::template_reader templates_;
     aogen::vulkan::spirv_cache spirv_;
+    std::map<std::string, planned_chain> planned_;
     std::map<std::string, std::unique_ptr<aogen::vulkan::chain>> chains_;
 };
+
+// Every chain the suite's cases will run (the variants adapted to each case's scene and twin,
+// and to every depth convention where a case compares them), skipping what cannot run.
+inline std::vector<aogen::variant> chains_needed(const suite_settings& settings)
+{
+    std::vector<aogen::variant> needed;
+    for (const stability_case& c : settings.cases)
+        for (const aogen::variant& base : settings.variants) {
+            const aogen::variant v = adapted(base, c.scene.camera), vt = adapted(base, c.twin.camera);
+            if (!cannot_run(v, c.scene).empty() || !cannot_run(vt, c.twin).empty()) continue;
+            needed.push_back(v), needed.push_back(vt);
+            if (!c.criterion.compare_depth) continue;
+            for (aogen::depth_convention d : {aogen::depth_convention::reversed, aogen::depth_convention::reversed_infinite}) {
+                aogen::variant vd = v;
+                vd.depth = d;
+                needed.push_back(vd);
+            }
+        }
+    return needed;
+}
 
 // What one run read back: the chain's output and the screen-sized AO, and which output
 // pixels the shader must leave at exactly 1 (background or a planted fault).
@@ -292,6 +345,7 @@ inline suite_data run_suite(const suite_settings& settings)
     }
     aogen::vulkan::context ctx(settings.device);
     detail::chain_cache chains(ctx, settings.templates);
+    chains.prepare(detail::chains_needed(settings));
     suite_data out;
     out.device = ctx.device_name();
     out.grid = settings.grid;

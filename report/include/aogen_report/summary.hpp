@@ -52,7 +52,7 @@ inline void summarise_variant(variant_record& v)
 {
     double plain = 0, calibrated = 0;
     int count = 0;
-    std::vector<double> ms, p10, p90, floors, ratios;
+    std::vector<double> ms, p10, p90, floors, ratios, bandwidths, bandwidth_ratios;
     v.raw = {};
     v.raw_measured = false;
     for (const run_record& r : v.runs) {
@@ -62,10 +62,12 @@ inline void summarise_variant(variant_record& v)
         v.raw_measured = v.raw_measured || !r.raw.empty();
         ms.push_back(r.ms.median), p10.push_back(r.ms.p10), p90.push_back(r.ms.p90);
         floors.push_back(r.floor_ms.median), ratios.push_back(r.ms.median / r.floor_ms.median);
+        bandwidths.push_back(r.bandwidth_ms.median), bandwidth_ratios.push_back(r.ms.median / r.bandwidth_ms.median);
     }
     if (count > 0) v.rmse = plain / count, v.rmse_calibrated = calibrated / count;
     v.ms = median(ms), v.ms_p10 = median(p10), v.ms_p90 = median(p90);
     v.floor_ms = median(floors), v.floor_ratio = median(ratios);
+    v.bandwidth_ms = median(bandwidths), v.bandwidth_ratio = median(bandwidth_ratios);
 }
 
 inline void mark_pareto(std::vector<variant_record>& variants)
