@@ -6,25 +6,41 @@
 // to filter (AO target size; its value in .r).
 //
 // THE FILTER
-//   out(p) = sum_q w(q - p) * e(q) * ao(q) / sum_q w(q - p) * e(q)
+//   out(p) = sum_q w(q - p) * e(p, q) * ao(q) / sum_q w(q - p) * e(p, q)
 // over the 5 x 5 target pixels q around p (offsets -2..2 on each axis, AO_DENOISE_RADIUS),
 //   w(dx, dy) = W[|dx|] * W[|dy|],  W = (1, 1, 1/2) for |d| = 0, 1, 2 (AO_DENOISE_WEIGHT_0..2)
-//   e(q)      = exp(-|z(q) - z(p)| * u.linear_sharpness)   z: view-space depth, world units
+//   e(p, q)   = the product of the edge weights exp(-|z(a) - z(b)| * u.linear_sharpness) of the
+//               neighbouring pixels a, b on the path from p to q: along p's row to q's
+//               column, then along that column to q (z: view-space depth, world units)
 // W is aogen::blur_params::denoise_weights: offsets 4 apart share a phase of the 4 x 4 noise
 // tile, and (1/2, 1, 1, 1, 1/2) gives each phase the same weight, so on a plane the tile's
 // pattern averages out exactly, as under the 4 x 4 box, with a window centred on p. The
-// depth term e is the bilateral blur's (linear view depth): it stops the filter at
-// silhouettes, at every distance and for every depth convention. Taps off the target or on
-// background are left out; the centre's weight is 1, so the sum is never empty. Background
+// depth term stops the filter at silhouettes, at every distance and for every depth
+// convention. Taps off the target or on background are no taps, and a path through one is
+// cut (their edges weigh 0); the centre's weight is 1, so the sum is never empty. Background
 // pixels write exactly 1.
 //
+// WHY A PATH OF EDGES, NOT |z(q) - z(p)| PER TAP
+//   The product of a path's edge weights is exp(-k * sum of the steps' |dz|). Along a row or
+//   a column of one plane z is monotone (1/z is affine along a screen line), so on a plane the
+//   sum is |z(q) - z(p)| -- the direct weight -- up to the corner of the path; across a
+//   silhouette it is at least as large, so the path form stops at least as hard. What it buys:
+//   the weights split by column. A column's sum
+//       C(c) = sum_dy W[|dy|] e(c, c + (0, dy)) ao(c + (0, dy))   (and its weight sum)
+//   does not depend on p, so it is computed once per column pixel and shared by the five
+//   pixels of its row that read it:
+//       out(p) = sum_dx W[|dx|] e(p, p + (dx, 0)) C(p + (dx, 0)) / (the same over weights).
+//   Each edge is one exp; 4 per column pixel and 4 per pixel, where the direct weight took 25
+//   per pixel.
+//
 // COST
-//   25 taps, each an AO value and a depth turned into view z. In compute passes the
-//   workgroup first loads the (AO_WORKGROUP_X + 4) x (AO_WORKGROUP_Y + 4) tile of taps it
-//   covers into shared memory (ao_load_tile, called by entry_compute.glsl for every
-//   invocation, before its edge test: the tile load ends in a barrier), so each texel is
-//   fetched and converted about 1.6 times per pixel (8 x 8 groups) instead of 25. Fragment
-//   passes fetch the 25 taps themselves.
+//   In compute passes the workgroup first loads the (AO_WORKGROUP_X + 4) x (AO_WORKGROUP_Y + 4)
+//   tile of taps it covers into shared memory, then the column sums of its rows'
+//   (AO_WORKGROUP_X + 4) x AO_WORKGROUP_Y pixels (ao_load_tile, called by entry_compute.glsl
+//   for every invocation, before its edge test: each phase ends in a barrier), so each texel
+//   is fetched and converted about 2.25 times per 8 x 8 group's pixel and each column sum
+//   made 1.5 times, instead of 25 taps per pixel. Fragment passes make the five column sums
+//   themselves, with the same arithmetic in the same order (the same bits).
 
 #if !defined(AO_PASS_BLUR_DENOISE)
 #error aogen: blur_denoise.glsl is the blur_denoise pass
@@ -58,25 +74,27 @@ vec2 ao_denoise_tap(ivec2 q)
     return vec2(ao_finalize(texelFetch(u_ao_input, q, 0).r), z);
 }
 
+// The edge weight between neighbouring taps a and b: exp(-|z(a) - z(b)| * sharpness); 0 when
+// either is no tap, which cuts every path through it.
+float ao_denoise_edge(vec2 a, vec2 b)
+{
+    if (a.x < 0.0 || b.x < 0.0) return 0.0;
+    return exp(-abs(a.y - b.y) * u.linear_sharpness);
+}
+
 #if defined(AO_STAGE_COMPUTE)
 #define AO_TILE_WIDTH (AO_WORKGROUP_X + 2 * AO_DENOISE_RADIUS)
 #define AO_TILE_HEIGHT (AO_WORKGROUP_Y + 2 * AO_DENOISE_RADIUS)
 #define AO_PASS_LOADS_TILE
+// The taps of the group's pixels and of the radius around them, then the column sums of the
+// group's rows over the tile's width.
 shared vec2 ao_tile[AO_TILE_WIDTH * AO_TILE_HEIGHT];
+shared vec2 ao_columns[AO_TILE_WIDTH * AO_WORKGROUP_Y];
 
 // The target pixel the tile's texel (0, 0) holds: the workgroup's first pixel - radius.
 ivec2 ao_tile_origin()
 {
     return ivec2(gl_WorkGroupID.xy) * ivec2(AO_WORKGROUP_X, AO_WORKGROUP_Y) - ivec2(AO_DENOISE_RADIUS);
-}
-
-// Every invocation of the group loads its share of the tile, then waits for the others.
-void ao_load_tile()
-{
-    ivec2 origin = ao_tile_origin();
-    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += AO_WORKGROUP_X * AO_WORKGROUP_Y)
-        ao_tile[i] = ao_denoise_tap(origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH));
-    barrier();
 }
 
 // The tap at target pixel q, inside this group's tile.
@@ -92,6 +110,55 @@ vec2 ao_denoise_read(ivec2 q)
 }
 #endif
 
+// Column c's sum: (sum of w * ao, sum of w) over the taps c + (0, dy), |dy| <= radius, w the
+// product of the edges from c to the tap times AO_DENOISE_WEIGHTS[|dy|]; (0, 0) when c is no tap.
+vec2 ao_denoise_column(ivec2 c)
+{
+    vec2 centre = ao_denoise_read(c);
+    if (centre.x < 0.0) return vec2(0.0);
+    vec2 sum = AO_DENOISE_WEIGHTS[0] * vec2(centre.x, 1.0);
+    for (int side = -1; side <= 1; side += 2) {
+        vec2 previous = centre;
+        float path = 1.0;
+        for (int d = 1; d <= AO_DENOISE_RADIUS; ++d) {
+            vec2 tap = ao_denoise_read(c + ivec2(0, side * d));
+            path *= ao_denoise_edge(previous, tap);
+            previous = tap;
+            float w = AO_DENOISE_WEIGHTS[d] * path;
+            if (w > 0.0) sum += w * vec2(tap.x, 1.0); // 0: cut or underflowed
+        }
+    }
+    return sum;
+}
+
+#if defined(AO_STAGE_COMPUTE)
+// Every invocation of the group loads its share of the tile, waits for the others, makes its
+// share of the column sums and waits again.
+void ao_load_tile()
+{
+    ivec2 origin = ao_tile_origin();
+    const int group_size = AO_WORKGROUP_X * AO_WORKGROUP_Y;
+    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += group_size)
+        ao_tile[i] = ao_denoise_tap(origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH));
+    barrier();
+    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_WORKGROUP_Y; i += group_size)
+        ao_columns[i] = ao_denoise_column(origin + ivec2(i % AO_TILE_WIDTH, AO_DENOISE_RADIUS + i / AO_TILE_WIDTH));
+    barrier();
+}
+
+// The column sum at target pixel c, a pixel of the group's rows within the tile's width.
+vec2 ao_denoise_column_sum(ivec2 c)
+{
+    ivec2 t = c - ao_tile_origin() - ivec2(0, AO_DENOISE_RADIUS);
+    return ao_columns[t.y * AO_TILE_WIDTH + t.x];
+}
+#else
+vec2 ao_denoise_column_sum(ivec2 c)
+{
+    return ao_denoise_column(c);
+}
+#endif
+
 float ao_pass(ivec2 p)
 {
     vec2 centre = ao_denoise_read(p);
@@ -100,17 +167,19 @@ float ao_pass(ivec2 p)
         if (ao_is_background(ao_load_depth(ao_full_pixel(p)))) return 1.0;
         return ao_finalize(texelFetch(u_ao_input, p, 0).r);
     }
-    float sum = 0.0;
-    float weight_sum = 0.0;
-    for (int dy = -AO_DENOISE_RADIUS; dy <= AO_DENOISE_RADIUS; ++dy) {
-        for (int dx = -AO_DENOISE_RADIUS; dx <= AO_DENOISE_RADIUS; ++dx) {
-            vec2 tap = ao_denoise_read(p + ivec2(dx, dy));
-            if (tap.x < 0.0) continue;
-            float w = AO_DENOISE_WEIGHTS[abs(dx)] * AO_DENOISE_WEIGHTS[abs(dy)] * exp(-abs(tap.y - centre.y) * u.linear_sharpness);
-            if (!(w > 0.0)) continue; // underflowed (or NaN): the tap is left out
-            sum += w * tap.x;
-            weight_sum += w;
+    // Along p's row: each column's sum, weighed by the edges from p to the column.
+    vec2 sum = AO_DENOISE_WEIGHTS[0] * ao_denoise_column_sum(p);
+    for (int side = -1; side <= 1; side += 2) {
+        vec2 previous = centre;
+        float path = 1.0;
+        for (int d = 1; d <= AO_DENOISE_RADIUS; ++d) {
+            ivec2 q = p + ivec2(side * d, 0);
+            vec2 tap = ao_denoise_read(q);
+            path *= ao_denoise_edge(previous, tap);
+            previous = tap;
+            float w = AO_DENOISE_WEIGHTS[d] * path;
+            if (w > 0.0) sum += w * ao_denoise_column_sum(q);
         }
     }
-    return weight_sum > 0.0 ? sum / weight_sum : centre.x;
+    return sum.y > 0.0 ? sum.x / sum.y : centre.x;
 }

@@ -2,7 +2,8 @@
 // of the pass's output, workgroups of AO_WORKGROUP_X x AO_WORKGROUP_Y. Dispatch
 // ceil(width / AO_WORKGROUP_X) x ceil(height / AO_WORKGROUP_Y) groups for the output
 // image's size; invocations past its edge write nothing. A pass that defines
-// AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first; one that defines
+// AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first (blur_denoise.glsl,
+// upsample.glsl: tiles of inputs shared in the workgroup); one that defines
 // AO_PASS_WRITES_QUADS writes 2 x 2 pixels per invocation (aogen::pixels_per_invocation):
 // dispatch it over ceil(width / 2) x ceil(height / 2).
 //
@@ -28,6 +29,9 @@ layout(local_size_x = AO_WORKGROUP_X, local_size_y = AO_WORKGROUP_Y, local_size_
 // the image are stored. Dispatch it over half the output's size, rounded up.
 void main()
 {
+#if defined(AO_PASS_LOADS_TILE)
+    ao_load_tile(); // as below: every invocation, before its edge test
+#endif
     ivec2 invocation = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(u_output);
     if (2 * invocation.x >= size.x || 2 * invocation.y >= size.y) return;

@@ -41,7 +41,10 @@ struct scene {
 };
 
 // blur_denoise.glsl on the CPU: `in` is the target (tw × th), a target pixel's depth is its
-// full pixel's.
+// full pixel's. A tap weighs W[|dx|] W[|dy|] times the product of the edge weights
+// exp(-|Δz| · sharpness) on its path from the centre: along the centre's row to the tap's
+// column, then along that column; a pixel that is no tap (off the target, background) cuts
+// the path.
 std::vector<double> denoise_on_cpu(const scene& s, const variant& v, const std::vector<float>& in, int tw, int th)
 {
     // The weights of offsets 0, ±1, ±2, written here rather than read from params.hpp (the
@@ -51,12 +54,29 @@ std::vector<double> denoise_on_cpu(const scene& s, const variant& v, const std::
     const double W[] = {1.0, 1.0, 0.5};
     const int R = 2;
     const int k = v.half_resolution ? 2 : 1;
-    auto z_at = [&](int x, int y) { return s.z[pixel(s.W, std::min(x * k, s.W - 1), std::min(y * k, s.H - 1))]; };
+    auto z_at = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= tw || y >= th) return std::nan("");
+        return s.z[pixel(s.W, std::min(x * k, s.W - 1), std::min(y * k, s.H - 1))];
+    };
+    auto edge = [&](int ax, int ay, int bx, int by) {
+        const double za = z_at(ax, ay), zb = z_at(bx, by);
+        return std::isnan(za) || std::isnan(zb) ? 0.0 : std::exp(-std::fabs(za - zb) * s.sharpness);
+    };
+    // The product of the edges from (x, y0) to (x, y0 + dy) along a column, or along a row.
+    auto column_path = [&](int x, int y0, int dy) {
+        double e = 1;
+        for (int step = dy > 0 ? 1 : -1, y = y0; y != y0 + dy; y += step) e *= edge(x, y, x, y + step);
+        return e;
+    };
+    auto row_path = [&](int x0, int y, int dx) {
+        double e = 1;
+        for (int step = dx > 0 ? 1 : -1, x = x0; x != x0 + dx; x += step) e *= edge(x, y, x + step, y);
+        return e;
+    };
     std::vector<double> out(in.size());
     for (int y = 0; y < th; ++y)
         for (int x = 0; x < tw; ++x) {
-            const double zc = z_at(x, y);
-            if (std::isnan(zc)) {
+            if (std::isnan(z_at(x, y))) {
                 out[pixel(tw, x, y)] = 1.0;
                 continue;
             }
@@ -64,8 +84,8 @@ std::vector<double> denoise_on_cpu(const scene& s, const variant& v, const std::
             for (int dy = -R; dy <= R; ++dy)
                 for (int dx = -R; dx <= R; ++dx) {
                     const int qx = x + dx, qy = y + dy;
-                    if (qx < 0 || qy < 0 || qx >= tw || qy >= th || std::isnan(z_at(qx, qy))) continue;
-                    const double w = W[std::abs(dx)] * W[std::abs(dy)] * std::exp(-std::fabs(z_at(qx, qy) - zc) * s.sharpness);
+                    if (std::isnan(z_at(qx, qy))) continue;
+                    const double w = W[std::abs(dx)] * W[std::abs(dy)] * row_path(x, y, dx) * column_path(qx, y, dy);
                     sum += w * in[pixel(tw, qx, qy)], weight += w;
                 }
             out[pixel(tw, x, y)] = sum / weight;
@@ -119,7 +139,7 @@ size_t require_equal(const std::vector<float>& gpu, const std::vector<double>& c
 
 } // namespace
 
-TEST_CASE("vulkan: the denoise pass is blur_denoise.glsl's 5x5 edge-aware filter of the AO pass's output")
+TEST_CASE("vulkan: the denoise pass is blur_denoise.glsl's 5x5 edge-aware filter of the AO pass's output (edges along a row, then a column)")
 {
     vulkan::context* ctx = shared_context();
     if (!ctx) return;
