@@ -100,16 +100,17 @@
 //   occlusion at d_max. With falloff_range 0 the weight is 1 up to d_max (a hard cut-off).
 //   The cosine itself is always the true direction's: the falloff changes how much a
 //   sample counts, never where it is.
-float ao_gtao_horizon_cos(vec2 pos, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance, float unoccluded)
+float ao_gtao_horizon_cos(vec2 pos, int level, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance, float unoccluded)
 {
     ivec2 size = ao_depth_size();
     if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return unoccluded;
     // The surface the sample lands on (depth.glsl's ao_depth_at): on a plane, its point
-    // under pos on the slice line; at a silhouette, the nearest texel's own point.
+    // under pos on the slice line; at a silhouette, the nearest texel's own point. `level`: the
+    // depth MIP level the tap's distance calls for (0 without a chain).
     float depth;
     vec2 at;
     ivec2 q;
-    if (!ao_depth_at(pos, depth, at, q)) return unoccluded;
+    if (!ao_depth_at(pos, level, depth, at, q)) return unoccluded;
     if (q == centre_pixel) return unoccluded;
     vec3 w = ao_view_position(at / vec2(size), depth) - P;
     float along_view = dot(w, V);
@@ -167,9 +168,11 @@ float ao_pass(ivec2 target_pixel)
         float cos_ahead = -sin_n;
         float cos_behind = sin_n;
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
-            vec2 offset = dir * (radius_pixels * (float(j) / float(AO_GTAO_STEPS)));
-            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, p, P, V, max_distance, -sin_n));
-            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, p, P, V, max_distance, sin_n));
+            float distance = radius_pixels * (float(j) / float(AO_GTAO_STEPS));
+            vec2 offset = dir * distance;
+            int level = ao_tap_level(distance);
+            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, level, p, P, V, max_distance, -sin_n));
+            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, level, p, P, V, max_distance, sin_n));
         }
         ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
         visibility_sum += float(projected.x * integral);

@@ -136,7 +136,9 @@ float ao_pass(ivec2 target_pixel)
         float scene_depth;
         vec2 at;
         ivec2 q;
-        if (!ao_depth_at(uv * fsize, scene_depth, at, q)) continue; // background: judged open
+        vec2 pos = uv * fsize;
+        int level = ao_tap_level(length(pos - (vec2(p) + 0.5))); // its depth MIP level (0 without a chain)
+        if (!ao_depth_at(pos, level, scene_depth, at, q)) continue; // background: judged open
         if (q == p) continue; // its own texel: a self-comparison that can only measure depth quantization
         float scene_z = ao_view_z(at / fsize, scene_depth);
         if (scene_z > S.z + bias && ao_is_finite(scene_z))

@@ -6,8 +6,9 @@
 //   A pass reads and writes resources by role (resource_role): its uniform block, the depth
 //   buffer, the G-buffer normals, the noise tile, the previous pass's AO, its output image and
 //   — in diagnostic builds — its raw-value image. Which roles a pass family has, in which
-//   order, is pass_roles(family): the AO pass, and the filter passes (blur_x, blur_y,
-//   blur_box, blur_denoise, upsample) that read an AO image. A role's binding numbers follow
+//   order, is pass_roles(family): the AO pass, the filter passes (blur_x, blur_y,
+//   blur_box, blur_denoise, upsample) that read an AO image, and the prefilter that builds the
+//   depth MIP chain (depth_mips.hpp) the AO pass then reads. A role's binding numbers follow
 //   from its place in that table and the binding model:
 //
 //     binding_model::vulkan   (SPIR-V, GLSL, ESSL, HLSL, MSL) one binding per role; textures
@@ -22,9 +23,12 @@
 //                    vulkan                          webgpu (group 0)
 //     AO pass        0 uniforms  1 depth  2 normals   0 uniforms  1 depth  2 depth sampler
 //                    3 noise  4 output  5 raw          3 normals  4 noise  5 output  6 raw
+//                    6 depth_mips                      7 depth_mips  8 depth_mips sampler
 //     filter passes  0 uniforms  1 depth  2 ao_input  0 uniforms  1 depth  2 depth sampler
 //                    3 output  4 raw                   3 ao_input  4 ao_input sampler
 //                                                      5 output  6 raw
+//     prefilter      0 uniforms  1 depth  2 output    0 uniforms  1 depth  2 depth sampler
+//                                                      3 output
 //
 //   A number belongs to its role whether or not a given shader declares it: a reconstructed-
 //   normal variant has no binding 2 (vulkan), a fragment pass no output image, a shipped
@@ -55,8 +59,8 @@ inline constexpr std::array<enum_name<binding_model>, 2> binding_model_names{{
 }};
 static_assert(names::distinct(binding_model_names));
 
-enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw };
-inline constexpr std::array<enum_name<resource_role>, 7> resource_role_names{{
+enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw, depth_mips };
+inline constexpr std::array<enum_name<resource_role>, 8> resource_role_names{{
     {resource_role::uniforms, "uniforms"},
     {resource_role::depth, "depth"},
     {resource_role::normals, "normals"},
@@ -64,19 +68,32 @@ inline constexpr std::array<enum_name<resource_role>, 7> resource_role_names{{
     {resource_role::ao_input, "ao_input"},
     {resource_role::output, "output"},
     {resource_role::raw, "raw"},
+    {resource_role::depth_mips, "depth_mips"},
 }};
 static_assert(names::distinct(resource_role_names));
 inline const char* to_name(resource_role r) { return names::name_of(resource_role_names, r, "resource role"); }
 
-// The AO pass, or one of the passes that filter its image (blurs and the upsample).
-enum class pass_family { ao, filter };
-inline pass_family family_of(pass_kind p) { return p == pass_kind::ao ? pass_family::ao : pass_family::filter; }
+// The AO pass, one of the passes that filter its image (blurs and the upsample), or the
+// prefilter that builds the depth MIP chain before it.
+enum class pass_family { ao, filter, prefilter };
+inline constexpr std::array<enum_name<pass_family>, 3> pass_family_names{{
+    {pass_family::ao, "ao"},
+    {pass_family::filter, "filter"},
+    {pass_family::prefilter, "prefilter"},
+}};
+inline pass_family family_of(pass_kind p)
+{
+    if (p == pass_kind::ao) return pass_family::ao;
+    return p == pass_kind::prefilter ? pass_family::prefilter : pass_family::filter;
+}
 
-// The roles of a family, in binding order.
+// The roles of a family, in binding order. A role added later goes last, so that no binding
+// number of an existing role moves (depth_mips, the AO pass's MIP chain, came after raw).
 inline std::vector<resource_role> pass_roles(pass_family f)
 {
     using r = resource_role;
-    if (f == pass_family::ao) return {r::uniforms, r::depth, r::normals, r::noise, r::output, r::raw};
+    if (f == pass_family::ao) return {r::uniforms, r::depth, r::normals, r::noise, r::output, r::raw, r::depth_mips};
+    if (f == pass_family::prefilter) return {r::uniforms, r::depth, r::output};
     return {r::uniforms, r::depth, r::ao_input, r::output, r::raw};
 }
 
@@ -84,11 +101,14 @@ inline std::vector<resource_role> pass_roles(pass_family f)
 inline bool is_texture(resource_role role)
 {
     return role == resource_role::depth || role == resource_role::normals || role == resource_role::noise ||
-           role == resource_role::ao_input;
+           role == resource_role::ao_input || role == resource_role::depth_mips;
 }
 
 // Does the pass gather from it (textureGather), so that WebGPU needs a sampler beside it?
-inline bool is_gathered(resource_role role) { return role == resource_role::depth || role == resource_role::ao_input; }
+inline bool is_gathered(resource_role role)
+{
+    return role == resource_role::depth || role == resource_role::ao_input || role == resource_role::depth_mips;
+}
 
 // The bindings a role takes in a model: the texture, storage image or block, then its sampler.
 inline uint32_t slots(resource_role role, binding_model m)
@@ -104,7 +124,7 @@ inline uint32_t binding_of(pass_family f, resource_role role, binding_model m)
         if (r == role) return next;
         next += slots(r, m);
     }
-    fail("resource role", std::string(to_name(role)) + " is not bound by the " + (f == pass_family::ao ? "AO" : "filter") + " passes",
+    fail("resource role", std::string(to_name(role)) + " is not bound by the " + names::name_of(pass_family_names, f, "pass family") + " passes",
          "valid: the roles of aogen::pass_roles");
 }
 
@@ -126,6 +146,7 @@ inline const char* what_it_holds(resource_role r)
     case resource_role::ao_input: return "the previous pass's AO, in .r";
     case resource_role::output: return "the output: a storage image (compute passes only)";
     case resource_role::raw: return "raw values before the guard, r32f (codegen::options::diagnostics only)";
+    case resource_role::depth_mips: return "the depth MIP chain's levels 1.. in one r32f atlas (the prefilter's output; variants with depth mips only)";
     }
     return "";
 }
@@ -135,10 +156,10 @@ inline const char* what_it_holds(resource_role r)
 inline std::string binding_table_markdown()
 {
     std::string md = "| passes | role | holds | vulkan | webgpu |\n|---|---|---|---:|---|\n";
-    for (pass_family f : {pass_family::ao, pass_family::filter})
+    for (pass_family f : {pass_family::ao, pass_family::filter, pass_family::prefilter})
         for (resource_role r : pass_roles(f)) {
             const std::optional<uint32_t> s = sampler_binding_of(f, r, binding_model::webgpu);
-            md += std::string("| ") + (f == pass_family::ao ? "ao" : "filter") + " | `" + to_name(r) + "` | " + what_it_holds(r) + " | " +
+            md += std::string("| ") + names::name_of(pass_family_names, f, "pass family") + " | `" + to_name(r) + "` | " + what_it_holds(r) + " | " +
                   std::to_string(binding_of(f, r, binding_model::vulkan)) + " | " + std::to_string(binding_of(f, r, binding_model::webgpu)) +
                   (s ? " (its sampler " + std::to_string(*s) + ")" : "") + " |\n";
         }

@@ -196,15 +196,18 @@ inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shad
     const pass_family family = family_of(pass);
     std::vector<resource> r;
     for (resource_role role : pass_roles(family)) {
-        const bool declared = role == resource_role::normals  ? v.normals != normal_source::reconstructed
-                              : role == resource_role::output ? stage == shader_stage::compute
-                              : role == resource_role::raw    ? o.diagnostics
-                                                              : true;
+        const bool declared = role == resource_role::normals      ? v.normals != normal_source::reconstructed
+                              : role == resource_role::output     ? stage == shader_stage::compute
+                              : role == resource_role::raw        ? o.diagnostics
+                              : role == resource_role::depth_mips ? has_prefilter_pass(v)
+                                                                  : true;
         if (!declared) continue;
         const uint32_t binding = binding_of(family, role, o.model);
         const std::string name = aogen::to_name(role);
         if (role == resource_role::uniforms) r.push_back({0, binding, k::uniform_buffer, name, uniform_block_of(v, pass).root.name, "", role});
-        else if (role == resource_role::output) r.push_back({0, binding, k::storage_image, name, "", o.output_format, role});
+        else if (role == resource_role::output)
+            // The prefilter writes raw depth, whatever format the AO images have.
+            r.push_back({0, binding, k::storage_image, name, "", pass == pass_kind::prefilter ? "r32f" : o.output_format, role});
         else if (role == resource_role::raw) r.push_back({0, binding, k::storage_image, name, "", "r32f", role});
         else if (o.model == binding_model::vulkan) r.push_back({0, binding, k::combined_image_sampler, name, "", "", role});
         else {
@@ -236,6 +239,7 @@ inline std::vector<std::string> template_files_of(const variant& v, pass_kind pa
     case pass_kind::blur_box: files.push_back("blur_box.glsl"); break;
     case pass_kind::blur_denoise: files.push_back("blur_denoise.glsl"); break;
     case pass_kind::upsample: files.push_back("upsample.glsl"); break;
+    case pass_kind::prefilter: files.push_back("prefilter.glsl"); return files; // its own entry point
     }
     files.push_back(stage == shader_stage::compute ? "entry_compute.glsl" : "entry_fragment.glsl");
     return files;
@@ -253,7 +257,9 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
         c.push_back({"AO_DENOISE_RADIUS", std::to_string(blur_params::denoise_radius)});
         for (size_t i = 0; i < blur_params::denoise_weights.size(); ++i)
             c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), glsl_float(blur_params::denoise_weights[i])});
-    } else if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
+    }
+    if (pass == pass_kind::ao && has_prefilter_pass(v)) c.push_back({"AO_MIP_LEVEL_OFFSET", glsl_float(depth_mips::level_offset)});
+    if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
         c.push_back({"AO_PC_BACKGROUND_DEPTH", glsl_float(point_cloud::background_depth)});
         c.push_back({"AO_PC_SAME_DEPTH", glsl_float(point_cloud::same_depth_tolerance)});
         c.push_back({"AO_PC_CAVITY_THRESHOLD", glsl_float(point_cloud::cavity_threshold)});

@@ -16,7 +16,8 @@
 //   default, each a token of its own: `rawdepth` (seed-exact bilateral depth term),
 //   `pc` (point-cloud fallback), `rc004` (seed 004's range check), `powint` (Unique
 //   Engine's power/intensity output), `fp16` (16-bit arithmetic in the AO pass), `nearest`
-//   (a half-resolution target left for the caller to upsample), `wg16x16` (workgroup size).
+//   (a half-resolution target left for the caller to upsample), `mip5` (a depth MIP chain of
+//   5 levels, read by far taps: depth_mips.hpp), `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -32,6 +33,7 @@
 #pragma once
 
 #include "axes.hpp"
+#include "depth_mips.hpp"
 #include "error.hpp"
 #include "names.hpp"
 #include "range.hpp"
@@ -41,6 +43,7 @@
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aogen {
@@ -80,6 +83,11 @@ struct variant {
     // How a half-resolution target reaches the screen (upsample_mode): by the depth-aware
     // upsample pass (the default; the chain's output is then screen-sized) or not at all.
     upsample_mode upsample = upsample_mode::depth_aware; // half resolution only
+    // The levels of the depth MIP chain the AO pass's taps read (depth_mips.hpp), level 0 the
+    // depth buffer itself: 1 is none; 2..5 add a prefilter pass before the AO pass that builds
+    // levels 1..N-1 (compute only: the prefilter reduces 16 x 16 blocks in shared memory).
+    static constexpr int_range depth_mips_range = depth_mips::levels_range;
+    int depth_mips = 1;
 };
 
 // ---------------------------------------------------------------------------------
@@ -120,6 +128,10 @@ inline void validate(const variant& v)
         fail("workgroup", std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y) + " is over " +
                               std::to_string(variant::max_workgroup_invocations) + " invocations",
              "valid: x * y <= " + std::to_string(variant::max_workgroup_invocations));
+    require_in("depth mips", v.depth_mips, variant::depth_mips_range);
+    if (v.depth_mips > 1 && v.stage != pipeline_stage::compute)
+        fail("depth mips", std::to_string(v.depth_mips) + " levels need the compute stage (the prefilter pass reduces the depth in shared memory)",
+             "valid: 1 (no MIP chain) with the fragment stage");
     if (v.point_cloud_fallback && v.tech != technique::ssao)
         fail("point-cloud fallback", std::string("is an SSAO feature (seed 004), not available with ") + names::name_of(technique_names, v.tech, "technique"),
              "valid: off with gtao and vbao");
@@ -129,17 +141,22 @@ inline void validate(const variant& v)
 // Passes and their defines
 // ---------------------------------------------------------------------------------
 
-// A variant runs as a chain: the AO pass, its blur passes, then (half resolution with the
-// depth-aware upsample) the upsample pass, the only one whose output is screen-sized.
-enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample };
-inline constexpr std::array<enum_name<pass_kind>, 6> pass_kind_names{{
+// A variant runs as a chain: (with a depth MIP chain) the prefilter pass that builds it, the
+// AO pass, its blur passes, then (half resolution with the depth-aware upsample) the upsample
+// pass, the only one whose output is screen-sized.
+enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample, prefilter };
+inline constexpr std::array<enum_name<pass_kind>, 7> pass_kind_names{{
     {pass_kind::ao, "ao"},
     {pass_kind::blur_x, "blur_x"},
     {pass_kind::blur_y, "blur_y"},
     {pass_kind::blur_box, "blur_box"},
     {pass_kind::blur_denoise, "blur_denoise"},
     {pass_kind::upsample, "upsample"},
+    {pass_kind::prefilter, "prefilter"},
 }};
+
+// Does `v` start with the prefilter pass (a depth MIP chain)?
+inline bool has_prefilter_pass(const variant& v) { return v.depth_mips > 1; }
 
 // Does `v` end with the depth-aware upsample pass?
 inline bool has_upsample_pass(const variant& v)
@@ -153,12 +170,22 @@ inline bool has_upsample_pass(const variant& v)
 // over its output's size divided by this, rounded up.
 inline int pixels_per_invocation(pass_kind pass, pipeline_stage stage)
 {
+    if (pass == pass_kind::prefilter) return depth_mips::pixels_per_invocation; // 2 × 2 depth texels each
     return pass == pass_kind::upsample && stage == pipeline_stage::compute ? 2 : 1;
+}
+
+// The workgroup a compute pass of `v` runs in: the variant's, but the prefilter's own 8 × 8.
+inline std::pair<int, int> workgroup_of(const variant& v, pass_kind pass)
+{
+    if (pass == pass_kind::prefilter) return {depth_mips::workgroup_side, depth_mips::workgroup_side};
+    return {v.workgroup_x, v.workgroup_y};
 }
 
 inline std::vector<pass_kind> passes(const variant& v)
 {
-    std::vector<pass_kind> p{pass_kind::ao};
+    std::vector<pass_kind> p;
+    if (has_prefilter_pass(v)) p.push_back(pass_kind::prefilter);
+    p.push_back(pass_kind::ao);
     switch (v.blur) {
     case blur_mode::bilateral: p.insert(p.end(), {pass_kind::blur_x, pass_kind::blur_y}); break;
     case blur_mode::box: p.push_back(pass_kind::blur_box); break;
@@ -191,11 +218,15 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
     auto count = [&d](const char* name, int value) { d.push_back({name, std::to_string(value)}); };
 
     choice("STAGE", names::name_of(pipeline_stage_names, v.stage, "stage"));
-    if (v.stage == pipeline_stage::compute) count("AO_WORKGROUP_X", v.workgroup_x), count("AO_WORKGROUP_Y", v.workgroup_y);
+    if (v.stage == pipeline_stage::compute) {
+        const auto [wx, wy] = workgroup_of(v, pass);
+        count("AO_WORKGROUP_X", wx), count("AO_WORKGROUP_Y", wy);
+    }
     choice("DEPTH", names::name_of(depth_convention_names, v.depth, "depth"));
     choice("PROJECTION", names::name_of(projection_kind_names, v.projection, "projection"));
     if (v.half_resolution) d.push_back({"AO_HALF_RESOLUTION", ""});
     choice("PASS", names::name_of(pass_kind_names, pass, "pass"));
+    if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
     if (pass == pass_kind::ao) {
         choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
         choice("NORMALS", names::name_of(normal_source_names, v.normals, "normals"));
@@ -255,7 +286,7 @@ inline bool operator==(const variant& a, const variant& b)
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
            x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.fp16 == y.fp16 &&
-           x.upsample == y.upsample;
+           x.upsample == y.upsample && x.depth_mips == y.depth_mips;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -322,6 +353,7 @@ inline std::string name_of(const variant& input)
     if (v.output != d.output) name += "-powint";
     if (v.fp16) name += "-fp16";
     if (v.upsample != d.upsample) name += "-nearest";
+    if (v.depth_mips != d.depth_mips) name += "-mip" + std::to_string(v.depth_mips);
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -365,7 +397,7 @@ inline variant variant_from_name(const std::string& name)
     std::vector<std::string> seen;
     for (size_t i = 8; i < t.size(); ++i) {
         const std::string& x = t[i];
-        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x;
+        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x.rfind("mip", 0) == 0 ? "mip" : x;
         if (std::find(seen.begin(), seen.end(), kind) != seen.end()) fail(subject, quote(x) + " appears twice", "valid: each extra once");
         seen.push_back(kind);
         if (x == "rawdepth") v.blur_depth = bilateral_depth::seed_raw;
@@ -374,11 +406,13 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "powint") v.output = ssao_output::power_intensity;
         else if (x == "fp16") v.fp16 = true;
         else if (x == "nearest") v.upsample = upsample_mode::nearest;
-        else if (kind == "wg") {
+        else if (kind == "mip") {
+            if ((v.depth_mips = detail::parse_count(x, 3)) < 0) fail(subject, quote(x) + " is not a depth MIP level count", "valid: mip2..mip5");
+        } else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, nearest, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, nearest, mip<N>, wg<X>x<Y>");
     }
     try {
         validate(v);

@@ -19,6 +19,9 @@ namespace aogen::wgsl {
 
 inline dawn_result run_variant_on_dawn(const variant& v, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
 {
+    if (has_prefilter_pass(v))
+        fail("wgsl on dawn", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
+             "valid: variants without -mip<N> (the Vulkan harness runs those with one)");
     const std::vector<pass_kind> ps = passes(v);
     const size_t per_pass = v.stage == pipeline_stage::compute ? 1 : 2; // codegen's order: vertex, then fragment
     if (texts.size() != ps.size() * per_pass || in.uniforms.size() != ps.size())

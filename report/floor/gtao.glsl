@@ -16,8 +16,9 @@ float ao_pass(ivec2 target_pixel)
         vec2 base = vec2(cos(angle), sin(angle));
         vec2 dir = vec2(base.x * rotation.x - base.y * rotation.y, base.x * rotation.y + base.y * rotation.x);
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
-            vec2 offset = dir * (radius_pixels * (float(j) / float(AO_GTAO_STEPS)));
-            sum += ao_floor_surface_fetches(centre + offset) + ao_floor_surface_fetches(centre - offset);
+            float distance = radius_pixels * (float(j) / float(AO_GTAO_STEPS));
+            vec2 offset = dir * distance;
+            sum += ao_floor_surface_fetches(centre + offset, distance) + ao_floor_surface_fetches(centre - offset, distance);
         }
     }
     return fract(sum);

@@ -12,14 +12,20 @@ float ao_floor_depth(ivec2 q)
     return ao_load_depth(q);
 }
 
-// What common/depth.glsl's ao_depth_at reads for a sample at screen position pos: the
-// 2x2 texels around pos (ao_depth_quad: one gather in compute passes, four loads in
-// fragment passes).
-float ao_floor_surface_fetches(vec2 pos)
+// What common/depth.glsl's ao_depth_at reads for a sample at screen position pos, `distance`
+// pixels from the pixel: the 2x2 texels around pos (ao_depth_quad: one gather in compute
+// passes, four loads in fragment passes) -- with a depth MIP chain, of the level the distance
+// calls for (ao_tap_level, ao_mip_quad).
+float ao_floor_surface_fetches(vec2 pos, float distance)
 {
     ivec2 size = ao_depth_size();
     if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0.0;
+    int level = ao_tap_level(distance);
+#if defined(AO_MIP_LEVELS)
+    vec4 g = level == 0 ? ao_depth_quad(ivec2(floor(pos - 0.5))) : ao_mip_quad(ivec2(floor(pos * ao_exp2i(-level) - 0.5)), level);
+#else
     vec4 g = ao_depth_quad(ivec2(floor(pos - 0.5)));
+#endif
     return g.x + g.y + g.z + g.w;
 }
 

@@ -13,7 +13,7 @@ float ao_pass(ivec2 target_pixel)
     for (int i = 0; i < AO_SSAO_SAMPLES; ++i) {
         vec2 k = u.kernel[i].xy;
         vec2 offset = vec2(k.x * r.x - k.y * r.y, k.x * r.y + k.y * r.x) * radius_pixels;
-        sum += ao_floor_surface_fetches(centre + offset);
+        sum += ao_floor_surface_fetches(centre + offset, length(offset));
     }
     return fract(sum);
 }

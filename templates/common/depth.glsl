@@ -107,6 +107,81 @@ vec4 ao_depth_quad(ivec2 i0)
 #endif
 }
 
+// Do four raw depths of a 2 x 2 block (d00, d10 the first row) lie off one plane? On a plane
+// their diagonals' sums agree: raw depth is affine on screen over a plane (ao_depth_at). Off
+// it when the sums differ by more than a quarter of the block's spread (a silhouette), with a
+// few ulps of slack for the rounding of depths near 1.
+bool ao_depth_off_plane(float d00, float d10, float d01, float d11)
+{
+    float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
+    float planarity = abs(d00 + d11 - d10 - d01);
+    return planarity > 0.25 * spread + 2.5e-7 * abs(d00);
+}
+
+// Of two raw depths (neither background), the one nearer the camera.
+float ao_depth_nearer(float a, float b)
+{
+#if defined(AO_DEPTH_STANDARD)
+    return min(a, b);
+#else
+    return max(a, b);
+#endif
+}
+
+#if defined(AO_MIP_LEVELS)
+// THE DEPTH MIP CHAIN (aogen/depth_mips.hpp; prefilter.glsl builds it): level L of the depth
+// buffer has ceil(size / 2^L) texels, each standing for 2^L x 2^L pixels; levels 1 ..
+// AO_MIP_LEVELS - 1 lie in one atlas, level 1 at (0, 0), level L >= 2 beside it at (the width
+// of level 1, the heights of levels 2 .. L - 1).
+
+// Level `level`'s size in texels (at least 1 x 1): ceil(size / 2^level), as a shift (an
+// integer division by a variable costs a GPU twenty instructions; a tap pays this per sample).
+ivec2 ao_mip_size(int level)
+{
+    return max((ao_depth_size() + ((1 << level) - 1)) >> level, ivec2(1));
+}
+
+// 2^e for a small integer e, exactly (the float's exponent field; exp2 need not be exact).
+float ao_exp2i(int e)
+{
+    return uintBitsToFloat(uint(127 + e) << 23);
+}
+
+// Where level `level` >= 1 starts in the atlas.
+ivec2 ao_mip_origin(int level)
+{
+    if (level <= 1) return ivec2(0);
+    int y = 0;
+    for (int k = 2; k < level; ++k) y += ao_mip_size(k).y;
+    return ivec2(ao_mip_size(1).x, y);
+}
+#endif
+
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+// u_depth_mips: declared by aogen::codegen (aogen/bindings.hpp): the atlas.
+
+// The level a tap `offset` full-resolution pixels from the pixel reads (depth_mips.hpp's
+// level_for): texels about 1 / 2^AO_MIP_LEVEL_OFFSET of its distance apart.
+int ao_mip_level(float offset)
+{
+    return clamp(int(floor(log2(max(offset, 1.0)) - AO_MIP_LEVEL_OFFSET)), 0, AO_MIP_LEVELS - 1);
+}
+
+// ao_depth_quad at level `level` >= 1: texels i0 .. i0 + 1 of that level, clamped to it, in
+// textureGather's order. One gather inside the level; four loads where the quad crosses its
+// edge (a gather there would read the next level's texels in the atlas). The values are the
+// same either way.
+vec4 ao_mip_quad(ivec2 i0, int level)
+{
+    ivec2 last = ao_mip_size(level) - 1, origin = ao_mip_origin(level);
+    if (all(greaterThanEqual(i0, ivec2(0))) && all(lessThan(i0, last)))
+        return textureGather(u_depth_mips, vec2(origin + i0 + 1) / vec2(textureSize(u_depth_mips, 0)), 0);
+    ivec2 c0 = origin + clamp(i0, ivec2(0), last), c1 = origin + clamp(i0 + 1, ivec2(0), last);
+    return vec4(texelFetch(u_depth_mips, ivec2(c0.x, c1.y), 0).r, texelFetch(u_depth_mips, c1, 0).r, texelFetch(u_depth_mips, ivec2(c1.x, c0.y), 0).r,
+                texelFetch(u_depth_mips, c0, 0).r);
+}
+#endif
+
 // The raw depth of the surface a sample at screen position `pos` (full-resolution pixels,
 // centres at +0.5) lands on, and `at`, the screen position that depth belongs to; false on
 // background. `nearest` gets pos's texel.
@@ -124,24 +199,65 @@ vec4 ao_depth_quad(ivec2 i0)
 // at its centre (at = the centre): a real surface point, where that depth at pos would be a
 // point on no surface -- on a face seen edge-on, one texel wide, such a point sat in front of
 // the face and read as an occluder.
-bool ao_depth_at(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
+//
+// With a depth MIP chain (AO_MIP_LEVELS) the same holds at every level: `level` (ao_mip_level
+// of the tap's distance) picks the level whose four texels around pos are read, `at` at a
+// silhouette is that level's texel's centre, and `nearest` the full-resolution pixel under it.
+// Level 0 is the depth buffer, read as without a chain.
+bool ao_depth_at(vec2 pos, int level, out float depth, out vec2 at, out ivec2 nearest)
 {
     ivec2 size = ao_depth_size();
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    float texel = ao_exp2i(level); // a level-`level` texel's side in pixels
+    ivec2 level_size = level == 0 ? size : ao_mip_size(level);
+    vec2 t = pos * ao_exp2i(-level) - 0.5; // exact: a power of two
+#else
+    ivec2 level_size = size;
     vec2 t = pos - 0.5;
+#endif
     ivec2 i0 = ivec2(floor(t));
     vec2 f = t - floor(t);
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    vec4 g;
+    if (level == 0) g = ao_depth_quad(i0); // a branch, not a select: one of the two reads per tap
+    else g = ao_mip_quad(i0, level);
+#else
     vec4 g = ao_depth_quad(i0);
+#endif
     float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
     // pos's own texel is one of the four: the one whose centre is within half a texel.
-    nearest = clamp(i0 + ivec2(greaterThanEqual(f, vec2(0.5))), ivec2(0), size - 1);
+    ivec2 own = clamp(i0 + ivec2(greaterThanEqual(f, vec2(0.5))), ivec2(0), level_size - 1);
     depth = f.y >= 0.5 ? (f.x >= 0.5 ? d11 : d01) : (f.x >= 0.5 ? d10 : d00);
-    at = vec2(nearest) + 0.5;
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    at = (vec2(own) + 0.5) * texel;
+    nearest = level == 0 ? own : clamp(ivec2(floor(at)), ivec2(0), size - 1);
+#else
+    // Without a chain, exactly the arithmetic of before it: a tap is ALU-bound, and the
+    // conversions above cost every variant 5-7 % on the H200 (BENCHMARKS.md, 2026-12-03).
+    at = vec2(own) + 0.5;
+    nearest = own;
+#endif
     if (ao_is_background(depth)) return false;
     if (ao_is_background(d00) || ao_is_background(d10) || ao_is_background(d01) || ao_is_background(d11)) return true;
-    float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
-    float planarity = abs(d00 + d11 - d10 - d01);
-    if (planarity > 0.25 * spread + 2.5e-7 * abs(d00)) return true; // not one plane
+    if (ao_depth_off_plane(d00, d10, d01, d11)) return true; // not one plane
     depth = ao_lerp(ao_lerp(d00, d10, f.x), ao_lerp(d01, d11, f.x), f.y);
     at = pos;
     return true;
+}
+
+// The level a tap `offset` full-resolution pixels from the pixel reads: ao_mip_level with a
+// depth MIP chain, 0 (the depth buffer) without one.
+int ao_tap_level(float offset)
+{
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    return ao_mip_level(offset);
+#else
+    return 0;
+#endif
+}
+
+// ao_depth_at at level 0: the depth buffer itself.
+bool ao_depth_at(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
+{
+    return ao_depth_at(pos, 0, depth, at, nearest);
 }

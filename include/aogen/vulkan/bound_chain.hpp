@@ -22,7 +22,8 @@
 //   starts with a full execution barrier, so its passes never overlap the work recorded
 //   before it and a pass's time is its own, not shared with its neighbour's.
 //   The AO target size is the caller's (chain.hpp's target_size for a variant); every
-//   pass's output has that size but the upsample pass's, which has the G-buffer's.
+//   pass's output has that size but the upsample pass's, which has the G-buffer's, and the
+//   prefilter's, the r32f atlas of the depth MIP chain (aogen/depth_mips.hpp) the AO pass reads.
 //
 // USAGE
 //     aogen::vulkan::pass_pipelines passes(ctx, v);
@@ -42,6 +43,7 @@
 #include "passes.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -78,15 +80,12 @@ public:
                 const raw_counter* counter = nullptr)
         : ctx_(ctx), passes_(passes), scope_(ctx), counter_(counter)
     {
-        for (size_t i = 0; i < passes.size(); ++i)
-            sizes_.push_back(passes[i].kind == pass_kind::upsample ? std::pair<int, int>{g.width(), g.height()}
-                                                                   : std::pair<int, int>{target_width, target_height});
+        depth_size_ = {g.width(), g.height()};
+        for (size_t i = 0; i < passes.size(); ++i) sizes_.push_back(output_size_of(passes[i].kind, target_width, target_height));
         if (in.uniforms.size() != passes.size())
             throw error("vulkan bound chain: uniform bytes for " + std::to_string(in.uniforms.size()) + " passes given to " + passes.name() +
                         " (valid: one block per pass, " + std::to_string(passes.size()) + ")");
-        for (size_t i = 0; i < passes.size(); ++i)
-            for (const codegen::resource& r : passes[i].resources)
-                if (r.role == resource_role::raw) has_raw_ = true;
+        for (size_t i = 0; i < passes.size(); ++i) has_raw_ = has_raw_ || declares_raw(i);
         resource_scope staging(ctx);
         VkCommandBuffer cb = staging.begin_commands();
         upload_inputs(cb, in, staging);
@@ -118,7 +117,8 @@ public:
             const image& out = outputs_[i];
             barrier(cb, out, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.layout, 0, use.access, readers, use.stage);
             if (has_raw_) raw_barrier(cb, raws_[i]);
-            passes_.record(cb, i, sets_[i], framebuffers_[i], sizes_[i].first, sizes_[i].second);
+            const auto [w, h] = passes_[i].kind == pass_kind::prefilter ? depth_size_ : sizes_[i]; // dispatched over the depth buffer
+            passes_.record(cb, i, sets_[i], framebuffers_[i], w, h);
             barrier(cb, out, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
                     use.stage, readers);
             if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, ts.first + static_cast<uint32_t>(i + 1));
@@ -156,6 +156,37 @@ public:
         return out;
     }
 
+    // The output pass `i` holds now (after run_once), as floats: the AO of an r8/rgba8 image
+    // (its first channel, / 255), or the r32f values of the prefilter's depth MIP atlas.
+    // width × height of that pass's output (output_size(i)).
+    std::vector<float> read_output(size_t i) const
+    {
+        if (i >= outputs_.size())
+            throw error("vulkan bound chain: no pass " + std::to_string(i) + " in " + passes_.name() + " (valid: 0.." + std::to_string(outputs_.size() - 1) + ")");
+        const auto [w, h] = sizes_[i];
+        const image& img = outputs_[i];
+        const bool floats = passes_[i].output_format == VK_FORMAT_R32_SFLOAT;
+        const size_t texel = floats ? 4 : texel_bytes(passes_[i].output_format);
+        resource_scope sc(ctx_);
+        VkCommandBuffer cb = sc.begin_commands();
+        barrier(cb, img, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const buffer host = sc.read_back(cb, img, w, h, texel);
+        barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
+                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+        sc.submit(cb);
+        std::vector<float> out(static_cast<size_t>(w) * h);
+        const auto* bytes = static_cast<const uint8_t*>(host.mapped);
+        for (size_t k = 0; k < out.size(); ++k) {
+            if (floats) std::memcpy(&out[k], bytes + 4 * k, 4);
+            else out[k] = bytes[k * texel] / 255.0f;
+        }
+        return out;
+    }
+
+    // The size of pass `i`'s output image.
+    std::pair<int, int> output_size(size_t i) const { return sizes_.at(i); }
+
     // The GPU time of each pass, in ms, from the ticks record() wrote at `ticks[first...]`.
     std::vector<double> pass_ms(const std::vector<uint64_t>& ticks, size_t first) const
     {
@@ -167,6 +198,25 @@ public:
     }
 
 private:
+    // The size of a pass's output image: the screen's for the upsample, the atlas of the
+    // depth MIP chain for the prefilter — made for the most levels a variant may have, which
+    // holds every shorter chain at the same places (aogen/depth_mips.hpp) — the target's
+    // otherwise.
+    std::pair<int, int> output_size_of(pass_kind pass, int target_width, int target_height) const
+    {
+        const auto [w, h] = depth_size_;
+        if (pass == pass_kind::upsample) return {w, h};
+        if (pass == pass_kind::prefilter) return depth_mips::atlas_size(w, h, depth_mips::levels_range.hi);
+        return {target_width, target_height};
+    }
+
+    bool declares_raw(size_t i) const
+    {
+        for (const codegen::resource& r : passes_[i].resources)
+            if (r.role == resource_role::raw) return true;
+        return false;
+    }
+
     void upload_inputs(VkCommandBuffer cb, const chain_inputs& in, resource_scope& staging)
     {
         const VkPipelineStageFlags readers = passes_.reader_stage();
@@ -184,7 +234,7 @@ private:
         const output_use use = passes_.output();
         for (size_t i = 0; i < passes_.size(); ++i) {
             const auto [w, h] = sizes_[i];
-            outputs_.push_back(scope_.make_image(w, h, passes_.output_format(),
+            outputs_.push_back(scope_.make_image(w, h, passes_[i].output_format,
                                                  use.usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT));
             clear_output(cb, outputs_.back(), 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
             framebuffers_.push_back(passes_.make_framebuffer(scope_, outputs_.back(), w, h));
@@ -245,6 +295,7 @@ private:
                                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, uint32_t(passes_.size())}},
                                                      uint32_t(passes_.size()));
         for (size_t i = 0; i < passes_.size(); ++i) {
+            if (!declares_raw(i)) continue; // nothing written (the prefilter): its counts stay 0
             barrier(cb, raws_[i], VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
                     passes_.reader_stage(), VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
             counter_->record(cb, counter_->make_set(pool, raws_[i], counts, stride * i), sizes_[i].first, sizes_[i].second);
@@ -298,9 +349,13 @@ private:
         case resource_role::ao_input:
             if (i > 0) return {clamp_, outputs_[i - 1].view, read};
             break;
+        case resource_role::depth_mips:
+            for (size_t k = 0; k < i; ++k)
+                if (passes_[k].kind == pass_kind::prefilter) return {clamp_, outputs_[k].view, read};
+            break;
         default: break;
         }
-        throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input)");
+        throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input, depth_mips after a prefilter)");
     }
 
     // A storage image of pass `i`: its output, or its raw values.
@@ -361,6 +416,7 @@ private:
     context& ctx_;
     const pass_pipelines& passes_;
     resource_scope scope_;
+    std::pair<int, int> depth_size_;         // the G-buffer's
     std::vector<std::pair<int, int>> sizes_; // per pass: its output's width, height
     bool has_raw_ = false;
     std::vector<std::pair<buffer, size_t>> uniforms_; // per pass: buffer, size

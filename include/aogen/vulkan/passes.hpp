@@ -53,6 +53,7 @@ inline VkFormat image_format_of(const std::string& qualifier)
 {
     if (qualifier == "r8") return VK_FORMAT_R8_UNORM;
     if (qualifier == "rgba8") return VK_FORMAT_R8G8B8A8_UNORM;
+    if (qualifier == "r32f") return VK_FORMAT_R32_SFLOAT; // the prefilter's depth MIP atlas, never read back
     throw error("vulkan: an output image in format " + qualifier + " (valid: r8, rgba8, the formats the harness reads back)");
 }
 
@@ -61,6 +62,7 @@ inline size_t texel_bytes(VkFormat f) { return f == VK_FORMAT_R8G8B8A8_UNORM ? 4
 struct pass_pipeline {
     pass_kind kind = pass_kind::ao;
     std::vector<codegen::resource> resources; // the compute or fragment shader's, by binding
+    VkFormat output_format = ao_format;       // its output image's: the chain's, or the prefilter's r32f atlas
     VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
@@ -165,7 +167,8 @@ public:
     }
 
     // Records pass `i` with `set` bound, writing its output (w × h, in output().layout;
-    // `framebuffer` from make_framebuffer for fragment passes).
+    // `framebuffer` from make_framebuffer for fragment passes). For the prefilter, w × h is
+    // the depth buffer's size, which it is dispatched over, not its atlas's.
     void record(VkCommandBuffer cb, size_t i, VkDescriptorSet set, VkFramebuffer framebuffer, int w, int h) const
     {
         const pass_pipeline& p = passes_[i];
@@ -178,7 +181,10 @@ public:
             vkCmdEndRenderPass(cb);
         } else {
             const int k = pixels_per_invocation(p.kind, pipeline_stage::compute);
-            vkCmdDispatch(cb, groups((w + k - 1) / k, workgroup_x_), groups((h + k - 1) / k, workgroup_y_), 1);
+            // The prefilter runs in its own 8 × 8 groups (aogen::workgroup_of), whatever the variant's.
+            const bool own_group = p.kind == pass_kind::prefilter;
+            const int wx = own_group ? depth_mips::workgroup_side : workgroup_x_, wy = own_group ? depth_mips::workgroup_side : workgroup_y_;
+            vkCmdDispatch(cb, groups((w + k - 1) / k, wx), groups((h + k - 1) / k, wy), 1);
         }
     }
 
@@ -203,13 +209,15 @@ private:
                 continue;
             }
             require_storage_in_fragment(s);
+            VkFormat own = ao_format;
             for (const codegen::resource& r : s.resources)
                 if (r.role == resource_role::output) {
-                    const VkFormat f = image_format_of(r.format);
-                    if (passes_.empty()) output_format_ = f;
-                    else if (f != output_format_) throw error("vulkan: " + s.name + " writes " + r.format + ", another pass of " + name_ + " another format (valid: one output format per chain)");
+                    own = image_format_of(r.format);
+                    if (s.pass == pass_kind::prefilter) continue; // its atlas is no AO image
+                    if (!has_ao_output_) output_format_ = own, has_ao_output_ = true;
+                    else if (own != output_format_) throw error("vulkan: " + s.name + " writes " + r.format + ", another pass of " + name_ + " another format (valid: one output format per chain)");
                 }
-            passes_.push_back({s.pass, s.resources});
+            passes_.push_back({s.pass, s.resources, own});
             pass_pipeline& p = passes_.back();
             make_layouts(p);
             if (fragment()) make_graphics(p, vertex, make_module(cache.get(s)));
@@ -389,6 +397,7 @@ private:
     std::string name_;
     pipeline_stage stage_;
     VkFormat output_format_ = ao_format;
+    bool has_ao_output_ = false; // output_format_ is a pass's, not the default
     int workgroup_x_, workgroup_y_;
     std::vector<pass_pipeline> passes_;
     std::vector<VkShaderModule> modules_; // every module, the shared vertex shader once
