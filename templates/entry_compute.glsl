@@ -1,5 +1,6 @@
 // entry_compute.glsl -- the compute entry point of every pass: one invocation per pixel
-// of the pass's output, workgroups of AO_WORKGROUP_X x AO_WORKGROUP_Y. Dispatch
+// of the pass's output (which pixel: ao_invocation_pixel), workgroups of AO_WORKGROUP_X x
+// AO_WORKGROUP_Y. Dispatch
 // ceil(width / AO_WORKGROUP_X) x ceil(height / AO_WORKGROUP_Y) groups for the output
 // image's size; invocations past its edge write nothing. A pass that defines
 // AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first (blur_denoise.glsl,
@@ -22,6 +23,28 @@ layout(local_size_x = AO_WORKGROUP_X, local_size_y = AO_WORKGROUP_Y, local_size_
 
 // u_output: declared by aogen::codegen (aogen/bindings.hpp).
 // u_raw: declared by aogen::codegen (aogen/bindings.hpp).
+
+// The pixel invocation `invocation` shades. By default the one at its global id. With
+// AO_DEINTERLEAVED_LAYERS L (an AO pass of a -deint variant) the dispatch walks the target as
+// L x L interleaved layers, each a ceil(size / L) lattice of the pixels L apart that share a
+// noise rotation: invocation (x, y) inside layer (i, j) shades pixel (L x + i, L y + j). A
+// warp then holds pixels of one layer, whose taps -- one rotation, centres L pixels apart --
+// land side by side instead of scattered over the radius, as in deinterleaved rendering
+// (Bavoil 2014); each pixel still reads what it always read, so the output is the same. The
+// groups (sides multiples of L: aogen::validate) cover the L x L layers; invocations past them,
+// and layer pixels past an edge that size does not divide, get a pixel outside the image.
+ivec2 ao_invocation_pixel(ivec2 invocation, ivec2 size)
+{
+#if defined(AO_DEINTERLEAVED_LAYERS)
+    const int layers = AO_DEINTERLEAVED_LAYERS;
+    ivec2 layer_size = (size + (layers - 1)) / layers;
+    ivec2 layer = invocation / layer_size; // one division per pixel, not per tap
+    if (any(greaterThanEqual(layer, ivec2(layers)))) return size;
+    return (invocation - layer * layer_size) * layers + layer;
+#else
+    return invocation;
+#endif
+}
 
 #if defined(AO_PASS_WRITES_QUADS)
 // A pass whose invocation writes a 2 x 2 square of output pixels (upsample.glsl): its
@@ -54,8 +77,8 @@ void main()
     // image's edge must reach too.
     ao_load_tile();
 #endif
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(u_output);
+    ivec2 pixel = ao_invocation_pixel(ivec2(gl_GlobalInvocationID.xy), size);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
     float ao = ao_pass(pixel);
 #if defined(AO_DIAGNOSTICS)

@@ -17,7 +17,8 @@
 //   `pc` (point-cloud fallback), `rc004` (seed 004's range check), `powint` (Unique
 //   Engine's power/intensity output), `fp16` (16-bit arithmetic in the AO pass), `nearest`
 //   (a half-resolution target left for the caller to upsample), `mip5` (a depth MIP chain of
-//   5 levels, read by far taps: depth_mips.hpp), `wg16x16` (workgroup size).
+//   5 levels, read by far taps: depth_mips.hpp), `deint` (the AO pass dispatched as 4 x 4
+//   interleaved layers), `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -88,7 +89,18 @@ struct variant {
     // levels 1..N-1 (compute only: the prefilter reduces 16 x 16 blocks in shared memory).
     static constexpr int_range depth_mips_range = depth_mips::levels_range;
     int depth_mips = 1;
+    // Compute only: the AO pass's invocations walk the target as 4 x 4 interleaved layers
+    // (deinterleaved_layers: invocation (x, y) of layer (i, j) shades pixel (4x + i, 4y + j)),
+    // so the invocations of one warp shade pixels 4 apart with one noise rotation (the tile
+    // is 4 x 4) and their taps land side by side -- the cache coherence of deinterleaved
+    // rendering (Bavoil 2014) without splitting the depth buffer: every pixel reads what it
+    // read before, so the output is the same bit for bit. Workgroup sides a multiple of 4.
+    bool deinterleaved = false;
 };
+
+// The side of the pixel lattice a deinterleaved AO pass walks one layer of: the side of the
+// 4 x 4 noise tile slice techniques use and SSAO's default.
+inline constexpr int deinterleaved_layers = 4;
 
 // ---------------------------------------------------------------------------------
 // Validation
@@ -132,6 +144,12 @@ inline void validate(const variant& v)
     if (v.depth_mips > 1 && v.stage != pipeline_stage::compute)
         fail("depth mips", std::to_string(v.depth_mips) + " levels need the compute stage (the prefilter pass reduces the depth in shared memory)",
              "valid: 1 (no MIP chain) with the fragment stage");
+    if (v.deinterleaved && v.stage != pipeline_stage::compute)
+        fail("deinterleaved", "dispatch needs the compute stage (a fragment pass shades the pixel it is drawn at)", "valid: off with the fragment stage");
+    if (v.deinterleaved && (v.workgroup_x % deinterleaved_layers != 0 || v.workgroup_y % deinterleaved_layers != 0))
+        fail("deinterleaved", "dispatch needs workgroup sides that are multiples of " + std::to_string(deinterleaved_layers) + ", not " +
+                                  std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y) + " (the groups must cover every layer)",
+             "valid: e.g. wg8x8, wg16x8, wg16x16");
     if (v.point_cloud_fallback && v.tech != technique::ssao)
         fail("point-cloud fallback", std::string("is an SSAO feature (seed 004), not available with ") + names::name_of(technique_names, v.tech, "technique"),
              "valid: off with gtao and vbao");
@@ -174,12 +192,15 @@ inline int pixels_per_invocation(pass_kind pass, pipeline_stage stage)
     return pass == pass_kind::upsample && stage == pipeline_stage::compute ? 2 : 1;
 }
 
-// The workgroup a compute pass of `v` runs in: the variant's, but the prefilter's own 8 × 8.
-inline std::pair<int, int> workgroup_of(const variant& v, pass_kind pass)
+// The workgroup a compute pass runs in: the variant's (`variant_group`), but the
+// prefilter's own 8 × 8, which its reduction through shared memory is written for.
+inline std::pair<int, int> workgroup_of(pass_kind pass, std::pair<int, int> variant_group)
 {
     if (pass == pass_kind::prefilter) return {depth_mips::workgroup_side, depth_mips::workgroup_side};
-    return {v.workgroup_x, v.workgroup_y};
+    return variant_group;
 }
+
+inline std::pair<int, int> workgroup_of(const variant& v, pass_kind pass) { return workgroup_of(pass, {v.workgroup_x, v.workgroup_y}); }
 
 inline std::vector<pass_kind> passes(const variant& v)
 {
@@ -227,6 +248,7 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
     if (v.half_resolution) d.push_back({"AO_HALF_RESOLUTION", ""});
     choice("PASS", names::name_of(pass_kind_names, pass, "pass"));
     if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
+    if (pass == pass_kind::ao && v.deinterleaved) count("AO_DEINTERLEAVED_LAYERS", deinterleaved_layers);
     if (pass == pass_kind::ao) {
         choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
         choice("NORMALS", names::name_of(normal_source_names, v.normals, "normals"));
@@ -274,6 +296,7 @@ inline variant canonical(variant v)
     if (!has_slices(v.tech)) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
     if (v.blur != blur_mode::bilateral) v.blur_depth = d.blur_depth;
     if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y;
+    if (v.stage != pipeline_stage::compute) v.deinterleaved = d.deinterleaved;
     if (!v.half_resolution) v.upsample = d.upsample;
     return v;
 }
@@ -286,7 +309,7 @@ inline bool operator==(const variant& a, const variant& b)
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
            x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.fp16 == y.fp16 &&
-           x.upsample == y.upsample && x.depth_mips == y.depth_mips;
+           x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -354,6 +377,7 @@ inline std::string name_of(const variant& input)
     if (v.fp16) name += "-fp16";
     if (v.upsample != d.upsample) name += "-nearest";
     if (v.depth_mips != d.depth_mips) name += "-mip" + std::to_string(v.depth_mips);
+    if (v.deinterleaved) name += "-deint";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -406,13 +430,14 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "powint") v.output = ssao_output::power_intensity;
         else if (x == "fp16") v.fp16 = true;
         else if (x == "nearest") v.upsample = upsample_mode::nearest;
+        else if (x == "deint") v.deinterleaved = true;
         else if (kind == "mip") {
             if ((v.depth_mips = detail::parse_count(x, 3)) < 0) fail(subject, quote(x) + " is not a depth MIP level count", "valid: mip2..mip5");
         } else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, nearest, mip<N>, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, nearest, mip<N>, deint, wg<X>x<Y>");
     }
     try {
         validate(v);

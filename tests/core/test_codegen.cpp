@@ -42,10 +42,13 @@ std::vector<variant> broad_set()
     m.half_resolution = {false, true};
     m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
     std::vector<variant> vs = expand(m);
-    // The depth MIP chain (compute only, not a matrix axis): each technique once, and a
-    // half-resolution chain with every pass after the prefilter.
+    // The depth MIP chain and the deinterleaved dispatch (compute only, not matrix axes): each
+    // technique once, and a half-resolution chain with every pass after the prefilter.
     for (const char* name : {"gtao-3x3-full-noblur-gbufworld-std-persp-cs-mip5", "vbao-2x3-half-bilateral-recon-rev-persp-cs-mip3",
-                             "ssao-s16-half-denoise-gbufworld-revinf-ortho-cs-mip2"})
+                             "ssao-s16-half-denoise-gbufworld-revinf-ortho-cs-mip2",
+                             // the deinterleaved dispatch (compute only): each technique, one with a chain
+                             "gtao-3x3-full-noblur-gbufworld-std-persp-cs-deint", "ssao-s16-half-bilateral-recon-rev-ortho-cs-deint",
+                             "vbao-2x3-half-denoise-gbufworld-std-persp-cs-mip3-deint-wg16x8"})
         vs.push_back(variant_from_name(name));
     return vs;
 }

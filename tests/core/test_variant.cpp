@@ -136,6 +136,13 @@ TEST_CASE("variant: invalid names name the token and the valid values", "[varian
                Contains("not in canonical form") && Contains("valid: ssao-s16-half-bilateral-gbufworld-std-persp-cs"));
     CHECK_THAT(error_of([] { variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-pc"); }),
                Contains("point-cloud fallback"));
+    CHECK_THAT(error_of([] { variant_from_name("gtao-2x3-half-denoise-gbufworld-std-persp-fs-deint"); }),
+               Contains("deinterleaved: dispatch needs the compute stage") && Contains("valid: off with the fragment stage"));
+    CHECK_THAT(error_of([] { variant_from_name("gtao-2x3-half-denoise-gbufworld-std-persp-cs-deint-wg6x8"); }),
+               Contains("deinterleaved: dispatch needs workgroup sides that are multiples of 4, not 6x8") && Contains("valid: e.g. wg8x8"));
+    CHECK(to_name(variant_from_name("gtao-2x3-half-denoise-gbufworld-std-persp-cs-deint-wg16x8")) ==
+          "gtao-2x3-half-denoise-gbufworld-std-persp-cs-deint-wg16x8");
+    CHECK(variant_from_name("gtao-2x3-half-denoise-gbufworld-std-persp-cs-deint").deinterleaved);
     variant v;
     v.workgroup_x = 64;
     CHECK_THAT(error_of([&] { validate(v); }), Contains("workgroup x: 64 is out of range (valid: 1..32)"));

@@ -117,7 +117,7 @@ public:
             const image& out = outputs_[i];
             barrier(cb, out, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.layout, 0, use.access, readers, use.stage);
             if (has_raw_) raw_barrier(cb, raws_[i]);
-            const auto [w, h] = passes_[i].kind == pass_kind::prefilter ? depth_size_ : sizes_[i]; // dispatched over the depth buffer
+            const auto [w, h] = dispatch_size(i);
             passes_.record(cb, i, sets_[i], framebuffers_[i], w, h);
             barrier(cb, out, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
                     use.stage, readers);
@@ -133,21 +133,14 @@ public:
         for (const image& out : outputs_) clear_output(cb, out, clear, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         const VkQueryPool pool = make_query_pool(sc, cb);
         record(cb, {pool, 0});
-        const image& last = outputs_.back();
-        barrier(cb, last, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
-        const size_t texel = texel_bytes(passes_.output_format()); // the AO in the first byte of each texel
-        const buffer ao = sc.read_back(cb, last, width(), height(), texel);
-        barrier(cb, last, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
-                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+        const size_t last = outputs_.size() - 1;
+        const buffer ao = record_read_back(sc, cb, last);
         const buffer counts = has_raw_ ? count_raw(sc, cb) : buffer{};
         sc.submit(cb);
 
         chain_result out;
         out.width = width(), out.height = height();
-        out.ao.resize(static_cast<size_t>(width()) * height());
-        const auto* px = static_cast<const uint8_t*>(ao.mapped);
-        for (size_t i = 0; i < out.ao.size(); ++i) out.ao[i] = px[i * texel] / 255.0f;
+        out.ao = decode_output(last, ao);
         for (size_t i = 0; i < passes_.size(); ++i) out.passes.push_back(names::name_of(pass_kind_names, passes_[i].kind, "pass"));
         if (pool) out.pass_ms = pass_ms(read_queries(ctx_, pool, queries()), 0);
         if (has_raw_)
@@ -163,25 +156,11 @@ public:
     {
         if (i >= outputs_.size())
             throw error("vulkan bound chain: no pass " + std::to_string(i) + " in " + passes_.name() + " (valid: 0.." + std::to_string(outputs_.size() - 1) + ")");
-        const auto [w, h] = sizes_[i];
-        const image& img = outputs_[i];
-        const bool floats = passes_[i].output_format == VK_FORMAT_R32_SFLOAT;
-        const size_t texel = floats ? 4 : texel_bytes(passes_[i].output_format);
         resource_scope sc(ctx_);
         VkCommandBuffer cb = sc.begin_commands();
-        barrier(cb, img, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
-        const buffer host = sc.read_back(cb, img, w, h, texel);
-        barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
-                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+        const buffer host = record_read_back(sc, cb, i);
         sc.submit(cb);
-        std::vector<float> out(static_cast<size_t>(w) * h);
-        const auto* bytes = static_cast<const uint8_t*>(host.mapped);
-        for (size_t k = 0; k < out.size(); ++k) {
-            if (floats) std::memcpy(&out[k], bytes + 4 * k, 4);
-            else out[k] = bytes[k * texel] / 255.0f;
-        }
-        return out;
+        return decode_output(i, host);
     }
 
     // The size of pass `i`'s output image.
@@ -198,6 +177,36 @@ public:
     }
 
 private:
+    // Records the copy of output `i` into a host buffer, leaving the image where it was
+    // (SHADER_READ_ONLY_OPTIMAL); the buffer holds its texels once `cb` is submitted.
+    buffer record_read_back(resource_scope& sc, VkCommandBuffer cb, size_t i) const
+    {
+        const auto [w, h] = sizes_[i];
+        const image& img = outputs_[i];
+        barrier(cb, img, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const buffer host = sc.read_back(cb, img, w, h, texel_bytes(passes_[i].output_format));
+        barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
+                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+        return host;
+    }
+
+    // Output `i`'s texels, read back into `host`, as floats: an r32f texel as it is, the
+    // first channel of an r8/rgba8 one / 255.
+    std::vector<float> decode_output(size_t i, const buffer& host) const
+    {
+        const auto [w, h] = sizes_[i];
+        const VkFormat format = passes_[i].output_format;
+        const size_t texel = texel_bytes(format);
+        std::vector<float> out(static_cast<size_t>(w) * h);
+        const auto* bytes = static_cast<const uint8_t*>(host.mapped);
+        for (size_t k = 0; k < out.size(); ++k) {
+            if (format == VK_FORMAT_R32_SFLOAT) std::memcpy(&out[k], bytes + texel * k, 4);
+            else out[k] = bytes[k * texel] / 255.0f;
+        }
+        return out;
+    }
+
     // The size of a pass's output image: the screen's for the upsample, the atlas of the
     // depth MIP chain for the prefilter — made for the most levels a variant may have, which
     // holds every shorter chain at the same places (aogen/depth_mips.hpp) — the target's
@@ -209,6 +218,10 @@ private:
         if (pass == pass_kind::prefilter) return depth_mips::atlas_size(w, h, depth_mips::levels_range.hi);
         return {target_width, target_height};
     }
+
+    // The size pass `i` is dispatched over: its output's, but the prefilter's, which covers
+    // the depth buffer it reduces and writes the smaller atlas around it.
+    std::pair<int, int> dispatch_size(size_t i) const { return passes_[i].kind == pass_kind::prefilter ? depth_size_ : sizes_[i]; }
 
     bool declares_raw(size_t i) const
     {

@@ -53,11 +53,12 @@ inline VkFormat image_format_of(const std::string& qualifier)
 {
     if (qualifier == "r8") return VK_FORMAT_R8_UNORM;
     if (qualifier == "rgba8") return VK_FORMAT_R8G8B8A8_UNORM;
-    if (qualifier == "r32f") return VK_FORMAT_R32_SFLOAT; // the prefilter's depth MIP atlas, never read back
+    if (qualifier == "r32f") return VK_FORMAT_R32_SFLOAT; // the prefilter's depth MIP atlas
     throw error("vulkan: an output image in format " + qualifier + " (valid: r8, rgba8, the formats the harness reads back)");
 }
 
-inline size_t texel_bytes(VkFormat f) { return f == VK_FORMAT_R8G8B8A8_UNORM ? 4 : 1; }
+// Bytes per texel of the formats image_format_of makes.
+inline size_t texel_bytes(VkFormat f) { return f == VK_FORMAT_R8_UNORM ? 1 : 4; }
 
 struct pass_pipeline {
     pass_kind kind = pass_kind::ao;
@@ -181,9 +182,7 @@ public:
             vkCmdEndRenderPass(cb);
         } else {
             const int k = pixels_per_invocation(p.kind, pipeline_stage::compute);
-            // The prefilter runs in its own 8 × 8 groups (aogen::workgroup_of), whatever the variant's.
-            const bool own_group = p.kind == pass_kind::prefilter;
-            const int wx = own_group ? depth_mips::workgroup_side : workgroup_x_, wy = own_group ? depth_mips::workgroup_side : workgroup_y_;
+            const auto [wx, wy] = workgroup_of(p.kind, {workgroup_x_, workgroup_y_});
             vkCmdDispatch(cb, groups((w + k - 1) / k, wx), groups((h + k - 1) / k, wy), 1);
         }
     }
