@@ -100,17 +100,17 @@
 //   occlusion at d_max. With falloff_range 0 the weight is 1 up to d_max (a hard cut-off).
 //   The cosine itself is always the true direction's: the falloff changes how much a
 //   sample counts, never where it is.
-float ao_gtao_horizon_cos(vec2 pos, int level, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance, float unoccluded)
+float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance, float unoccluded)
 {
     ivec2 size = ao_depth_size();
     if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return unoccluded;
-    // The surface the sample lands on (depth.glsl's ao_depth_at): on a plane, its point
-    // under pos on the slice line; at a silhouette, the nearest texel's own point. `level`: the
-    // depth MIP level the tap's distance calls for (0 without a chain).
+    // The surface the sample lands on (common/slices.glsl's ao_slice_tap_surface), `pixels`
+    // from the pixel: near it, on a plane, its point under pos on the slice line, at a
+    // silhouette the nearest texel's own point; farther, the texel's own point.
     float depth;
     vec2 at;
     ivec2 q;
-    if (!ao_depth_at(pos, level, depth, at, q)) return unoccluded;
+    if (!ao_slice_tap_surface(pos, pixels, depth, at, q)) return unoccluded;
     if (q == centre_pixel) return unoccluded;
     vec3 w = ao_view_position(at / vec2(size), depth) - P;
     float along_view = dot(w, V);
@@ -170,9 +170,8 @@ float ao_pass(ivec2 target_pixel)
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
             float distance = radius_pixels * (float(j) / float(AO_GTAO_STEPS));
             vec2 offset = dir * distance;
-            int level = ao_tap_level(distance);
-            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, level, p, P, V, max_distance, -sin_n));
-            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, level, p, P, V, max_distance, sin_n));
+            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, distance, p, P, V, max_distance, -sin_n));
+            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, distance, p, P, V, max_distance, sin_n));
         }
         ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
         visibility_sum += float(projected.x * integral);

@@ -150,10 +150,10 @@ bool ao_vbao_angle(vec3 X, vec3 P, vec3 V, float toward, out ao_half theta)
     return true;
 }
 
-// The sectors one sample at screen position `pos` (full-resolution pixels) marks, on the
-// side `toward` of the slice whose projected normal has angle n: its front S and back S -
+// The sectors one sample at screen position `pos` (full-resolution pixels, `pixels` from the
+// pixel along the slice) marks, on the side `toward` of the slice whose projected normal has angle n: its front S and back S -
 // V_S thickness (V_S: toward the camera from S), or 0 when it marks nothing.
-uint ao_vbao_sample(vec2 pos, int level, ivec2 centre_pixel, vec3 P, vec3 V, vec3 normal, float toward, ao_half n, float radius)
+uint ao_vbao_sample(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, vec3 normal, float toward, ao_half n, float radius)
 {
     ivec2 size = ao_depth_size();
     // On screen, and between the outermost texel centres: in the half texel beyond them
@@ -165,7 +165,7 @@ uint ao_vbao_sample(vec2 pos, int level, ivec2 centre_pixel, vec3 P, vec3 V, vec
     float depth;
     vec2 at;
     ivec2 q;
-    if (!ao_depth_at(pos, level, depth, at, q) || q == centre_pixel) return 0u; // depth.glsl, as gtao.glsl (level: its MIP level)
+    if (!ao_slice_tap_surface(pos, pixels, depth, at, q) || q == centre_pixel) return 0u; // common/slices.glsl, as gtao.glsl
     vec3 front = ao_view_position(at / vec2(size), depth);
     vec3 w = front - P;
     float distance = length(w);
@@ -211,9 +211,8 @@ float ao_pass(ivec2 target_pixel)
         for (int j = 1; j <= AO_VBAO_STEPS; ++j) {
             float distance = radius_pixels * (float(j) / float(AO_VBAO_STEPS));
             vec2 offset = dir * distance;
-            int level = ao_tap_level(distance);
-            occluded |= ao_vbao_sample(centre + offset, level, p, P, V, n, 1.0, projected.y, radius);
-            occluded |= ao_vbao_sample(centre - offset, level, p, P, V, n, -1.0, projected.y, radius);
+            occluded |= ao_vbao_sample(centre + offset, distance, p, P, V, n, 1.0, projected.y, radius);
+            occluded |= ao_vbao_sample(centre - offset, distance, p, P, V, n, -1.0, projected.y, radius);
         }
         float whole = float(projected.x * ao_slice_unoccluded(projected.y));
         visibility_sum += whole * float(ao_vbao_slice_visible(occluded));

@@ -142,6 +142,18 @@ inline constexpr float cavity_threshold = 0.0002f;
 inline constexpr int ring_pixels = 3;
 } // namespace point_cloud
 
+// How far from its pixel a slice tap (GTAO, VBAO) may read the texel under it at the texel's
+// centre instead of the plane's depth under the tap itself (common/slices.glsl's
+// ao_slice_tap_surface). The texel's centre is a true surface point, up to 0.71 pixels off the
+// slice's line, so the direction to it is off the slice's plane by at most 0.71 / distance
+// radians: 2.5 degrees at 16 pixels, where an open plane's horizon moves by second order (the
+// slice integral is flat at the hemisphere's edge) -- below 1/255. Nearer taps keep the exact
+// bilinear reading (issue 11). On the H200 at 1080p, reading every tap at its texel's centre
+// took a quarter off the AO pass at the same error (BENCHMARKS.md, 2026-12-03).
+namespace slice_taps {
+inline constexpr float texel_centre_pixels = 16.0f;
+} // namespace slice_taps
+
 // ---------------------------------------------------------------------------------
 // GTAO
 // ---------------------------------------------------------------------------------

@@ -259,6 +259,7 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
             c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), glsl_float(blur_params::denoise_weights[i])});
     }
     if (pass == pass_kind::ao && has_prefilter_pass(v)) c.push_back({"AO_MIP_LEVEL_OFFSET", glsl_float(depth_mips::level_offset)});
+    if (pass == pass_kind::ao && has_slices(v.tech)) c.push_back({"AO_SLICE_TEXEL_CENTRE_PIXELS", glsl_float(slice_taps::texel_centre_pixels)});
     if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
         c.push_back({"AO_PC_BACKGROUND_DEPTH", glsl_float(point_cloud::background_depth)});
         c.push_back({"AO_PC_SAME_DEPTH", glsl_float(point_cloud::same_depth_tolerance)});

@@ -1,8 +1,19 @@
 // floor/gtao.glsl -- the fetch floor of gtao.glsl: per pixel the centre depth, the normal's
 // fetches and the noise rotation, then, for each of AO_GTAO_SLICES slices rotated by the
 // noise, AO_GTAO_STEPS samples on each side along the slice's screen direction at
-// j / STEPS of the radius in pixels -- the positions gtao.glsl reads, each a depth fetch and
-// a 2x2 gather (depth.glsl's ao_surface_at) -- and no horizon, no slice integral.
+// j / STEPS of the radius in pixels -- the positions gtao.glsl reads, each what
+// common/slices.glsl's ao_slice_tap_surface fetches there (a 2x2 gather near the pixel, one
+// texel from AO_SLICE_TEXEL_CENTRE_PIXELS on) -- and no horizon, no slice integral.
+
+// What ao_slice_tap_surface fetches for a tap at `pos`, `distance` pixels from the pixel.
+float ao_floor_slice_tap_fetches(vec2 pos, float distance)
+{
+    ivec2 size = ao_depth_size();
+    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0.0;
+    if (ao_tap_level(distance) == 0 && distance >= AO_SLICE_TEXEL_CENTRE_PIXELS)
+        return ao_load_depth(clamp(ivec2(floor(pos)), ivec2(0), size - 1));
+    return ao_floor_surface_fetches(pos, distance);
+}
 
 float ao_pass(ivec2 target_pixel)
 {
@@ -18,7 +29,7 @@ float ao_pass(ivec2 target_pixel)
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
             float distance = radius_pixels * (float(j) / float(AO_GTAO_STEPS));
             vec2 offset = dir * distance;
-            sum += ao_floor_surface_fetches(centre + offset, distance) + ao_floor_surface_fetches(centre - offset, distance);
+            sum += ao_floor_slice_tap_fetches(centre + offset, distance) + ao_floor_slice_tap_fetches(centre - offset, distance);
         }
     }
     return fract(sum);

@@ -245,6 +245,18 @@ bool ao_depth_at(vec2 pos, int level, out float depth, out vec2 at, out ivec2 ne
     return true;
 }
 
+// The surface point of the texel under screen position `pos` (full-resolution pixels): its
+// own depth at its centre (at, and nearest, the texel); false on background. One fetch, no
+// plane test: a true surface point, but up to 0.71 pixels from pos (common/slices.glsl's
+// ao_slice_tap_surface says where that is good enough).
+bool ao_depth_texel(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
+{
+    nearest = clamp(ivec2(floor(pos)), ivec2(0), ao_depth_size() - 1);
+    depth = ao_load_depth(nearest);
+    at = vec2(nearest) + 0.5;
+    return !ao_is_background(depth);
+}
+
 // The level a tap `offset` full-resolution pixels from the pixel reads: ao_mip_level with a
 // depth MIP chain, 0 (the depth buffer) without one.
 int ao_tap_level(float offset)

@@ -44,6 +44,25 @@ void ao_slice_radius(vec3 P, out float radius_pixels, out float radius)
     radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
 }
 
+// The surface a slice tap at screen position `pos`, `distance` full-resolution pixels from
+// the pixel along its slice, lands on: depth, at and nearest as depth.glsl's ao_depth_at
+// gives them; false on background.
+//   Near taps read ao_depth_at: over a plane, the plane's depth under pos itself, exactly --
+// a texel's depth taken up to half a texel from its centre lies above a grazing floor or a
+// wide lens's edges and reads as an occluder (issue 11).
+//   From AO_SLICE_TEXEL_CENTRE_PIXELS on (aogen::slice_taps), the texel under pos at its
+// centre (ao_depth_texel): a true surface point, whose direction from P leaves the slice's
+// plane by at most 0.71 / distance radians. On an open plane that can lift a horizon a
+// little above the hemisphere's edge, where the slice integral is flat: the change is of
+// second order, below 1/255. One fetch instead of a gather, a plane test and a bilinear mix.
+// Taps that read the depth MIP chain (level >= 1) keep its reading.
+bool ao_slice_tap_surface(vec2 pos, float distance, out float depth, out vec2 at, out ivec2 nearest)
+{
+    int level = ao_tap_level(distance);
+    if (level == 0 && distance >= AO_SLICE_TEXEL_CENTRE_PIXELS) return ao_depth_texel(pos, depth, at, nearest);
+    return ao_depth_at(pos, level, depth, at, nearest);
+}
+
 // Slice s of `count`: the screen direction `dir` (pixels, y down) at angle s * pi / count,
 // rotated by the pixel's noise `rotation`, and `side`, its view-space direction (y up) made
 // perpendicular to V. False when the two are (nearly) parallel: no plane to integrate.

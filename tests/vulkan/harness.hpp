@@ -105,6 +105,27 @@ inline void set_normal(vulkan::gbuffer& g, size_t i, vec3 n)
     g.normals[i * 4 + 0] = n.x, g.normals[i * 4 + 1] = n.y, g.normals[i * 4 + 2] = n.z;
 }
 
+// The plane through view-space (0, 0, -4) with its normal tilted `tilt_degrees` from the view
+// axis (about x and y), seen by a camera at the origin looking down -z (tan_half_fov_y, w × h);
+// background where it lies behind the camera or farther than 12 (where depth is coarse).
+// Normals are the plane's, in view space = world space.
+inline vulkan::gbuffer tilted_plane(int w, int h, float tan_half_fov_y, const mat4& proj, float tilt_degrees)
+{
+    const float a = tilt_degrees * 3.14159265f / 180.0f;
+    const vec3 n{std::sin(a) * 0.6f, std::sin(a) * 0.8f, std::cos(a)};
+    const float aspect = float(w) / float(h);
+    vulkan::gbuffer g = cleared(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const vec3 d{(2.0f * (x + 0.5f) / w - 1.0f) * aspect * tan_half_fov_y, (1.0f - 2.0f * (y + 0.5f) / h) * tan_half_fov_y, -1.0f};
+            const float t = dot(vec3{0, 0, -4}, n) / dot(d, n);
+            if (!(t > 0.0f && t < 12.0f)) continue;
+            g.depth[pixel(w, x, y)] = depth_of(proj, d * t);
+            set_normal(g, pixel(w, x, y), n);
+        }
+    return g;
+}
+
 // A plane facing the camera at view depth 5 over the left 2/3 of the image; the rest is
 // cleared depth (1.0, background). World space = view space.
 inline vulkan::gbuffer facing_plane(int w, int h, const mat4& proj)

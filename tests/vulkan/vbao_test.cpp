@@ -95,18 +95,7 @@ TEST_CASE("vulkan: vbao, an open plane is exactly 1 at any tilt, whatever the th
     const float tan_half_fov_y = 0.7f;
     const mat4 proj = perspective(tan_half_fov_y, float(W) / H, 0.1f, 100.0f);
     for (float tilt_degrees : {0.0f, 35.0f, 70.0f, 85.0f}) {
-        // The plane through (0, 0, -4) with its normal tilted from the view axis about x and y.
-        const float a = tilt_degrees * 3.14159265f / 180.0f;
-        const vec3 n{std::sin(a) * 0.6f, std::sin(a) * 0.8f, std::cos(a)};
-        vulkan::gbuffer g = cleared(W, H);
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                const vec3 d = ray_of(look_at({0, 0, 0}, {0, 1, 0}), W, H, x, y, tan_half_fov_y).view_dir;
-                const float t = dot(vec3{0, 0, -4}, n) / dot(d, n);
-                if (!(t > 0.0f && t < 12.0f)) continue; // beyond: background (far from the far plane, where depth is coarse)
-                g.depth[pixel(W, x, y)] = depth_of(proj, d * t);
-                set_normal(g, pixel(W, x, y), n);
-            }
+        const vulkan::gbuffer g = tilted_plane(W, H, tan_half_fov_y, proj, tilt_degrees);
         for (float thickness : {0.01f, 0.5f, 100.0f}) {
             const variant v = vbao_variant(4, 4, false, pipeline_stage::compute);
             vulkan::chain_settings s = settings_for(proj);
