@@ -295,8 +295,7 @@ inline variant canonical(variant v)
     }
     if (!has_slices(v.tech)) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
     if (v.blur != blur_mode::bilateral) v.blur_depth = d.blur_depth;
-    if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y;
-    if (v.stage != pipeline_stage::compute) v.deinterleaved = d.deinterleaved;
+    if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y, v.deinterleaved = d.deinterleaved;
     if (!v.half_resolution) v.upsample = d.upsample;
     return v;
 }

@@ -10,9 +10,12 @@ float ao_floor_slice_tap_fetches(vec2 pos, float distance)
 {
     ivec2 size = ao_depth_size();
     if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0.0;
-    if (ao_tap_level(distance) == 0 && distance >= AO_SLICE_TEXEL_CENTRE_PIXELS)
-        return ao_load_depth(clamp(ivec2(floor(pos)), ivec2(0), size - 1));
-    return ao_floor_surface_fetches(pos, distance);
+    if (!ao_slice_tap_reads_texel(distance)) return ao_floor_surface_fetches(pos, distance);
+    float depth;
+    vec2 at;
+    ivec2 texel;
+    ao_depth_texel(pos, depth, at, texel);
+    return depth;
 }
 
 float ao_pass(ivec2 target_pixel)

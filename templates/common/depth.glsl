@@ -268,6 +268,16 @@ int ao_tap_level(float offset)
 #endif
 }
 
+#if defined(AO_SLICE_TEXEL_CENTRE_PIXELS)
+// Does a slice tap `distance` pixels from its pixel read its texel at the centre
+// (ao_depth_texel) rather than ao_depth_at? From AO_SLICE_TEXEL_CENTRE_PIXELS on, unless a
+// depth MIP chain gives it a coarser level (common/slices.glsl's ao_slice_tap_surface says why).
+bool ao_slice_tap_reads_texel(float distance)
+{
+    return ao_tap_level(distance) == 0 && distance >= AO_SLICE_TEXEL_CENTRE_PIXELS;
+}
+#endif
+
 // ao_depth_at at level 0: the depth buffer itself.
 bool ao_depth_at(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
 {

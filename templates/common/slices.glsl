@@ -58,9 +58,8 @@ void ao_slice_radius(vec3 P, out float radius_pixels, out float radius)
 // Taps that read the depth MIP chain (level >= 1) keep its reading.
 bool ao_slice_tap_surface(vec2 pos, float distance, out float depth, out vec2 at, out ivec2 nearest)
 {
-    int level = ao_tap_level(distance);
-    if (level == 0 && distance >= AO_SLICE_TEXEL_CENTRE_PIXELS) return ao_depth_texel(pos, depth, at, nearest);
-    return ao_depth_at(pos, level, depth, at, nearest);
+    if (ao_slice_tap_reads_texel(distance)) return ao_depth_texel(pos, depth, at, nearest);
+    return ao_depth_at(pos, ao_tap_level(distance), depth, at, nearest);
 }
 
 // Slice s of `count`: the screen direction `dir` (pixels, y down) at angle s * pi / count,

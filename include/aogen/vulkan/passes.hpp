@@ -132,8 +132,6 @@ public:
     const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
     bool fragment() const { return stage_ == pipeline_stage::fragment; }
     const std::string& name() const { return name_; }
-    // The format of every pass's output image: its output's (ao_format for fragment passes).
-    VkFormat output_format() const { return output_format_; }
 
     // Where the passes read their inputs (uploads and the previous pass's output).
     VkPipelineStageFlags reader_stage() const
