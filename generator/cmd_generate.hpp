@@ -253,7 +253,7 @@ public:
     }
 
 private:
-    std::map<std::pair<std::string, bool>, compile::compiled> cache_; // by GLSL source text and ESSL-only
+    std::map<std::pair<std::string, std::vector<compile::target>>, compile::compiled> cache_; // by GLSL source text and targets
     struct translated_wgsl {
         std::string text;
         compile::reflection refl; // of naga's SPIR-V of the text
@@ -273,7 +273,9 @@ private:
     const compile::compiled& compiled_once(const std::string& glsl, shader_stage stage, const std::string& name,
                                            const std::vector<compile::target>& for_targets)
     {
-        const auto key = std::make_pair(glsl, for_targets.size() == 1 && for_targets[0] == compile::target::essl);
+        // By the targets too: prepare_wgsl compiles a WebGPU-model source for SPIR-V alone, and
+        // where that source is the ordinary one, add() then needs its other targets' texts.
+        const auto key = std::make_pair(glsl, for_targets);
         auto found = cache_.find(key);
         if (found != cache_.end()) return found->second;
         return cache_.emplace(key, compile::compile(glsl, stage, name, for_targets)).first->second;

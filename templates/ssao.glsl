@@ -33,6 +33,27 @@
 //                                                                              (seed 003)
 // With AO_POINT_CLOUD_FALLBACK (seed 004), ssao_point_cloud.glsl comes before this file
 // and billboard-interior pixels take its depth-cavity test instead.
+//
+// DECISIONS (variant axis `decisions`, aogen/axes.hpp). Above, each judgement is a step:
+// occluded or not, judged or not, the plane's depth or the texel's, billboard or not. That
+// is AO_SSAO_DECISIONS_STEP, the seeds' form. Each step turns a change in the last bit of a
+// depth into a whole vote, 1 / N of the output times the strength -- 0.2 at 16 samples and a
+// strength of 3.3 -- so one scene in two depth conventions, whose depths round differently,
+// differed by that much. AO_SSAO_DECISIONS_SMOOTH (the default) makes each a weight that
+// moves continuously over a narrow band (the bands are aogen/params.hpp's ssao_bands):
+//   the vote       clamp((scene z - (S.z + bias)) / (AO_SSAO_VOTE_BAND radius), 0, 1);
+//   the own texel  a sample counts from 0 at its pixel's texel's edge to 1 at
+//                  AO_SSAO_SELF_BAND_PIXELS past it (ao_ssao_self_weight);
+//   the screen     a sample is judged from 0 at the border to 1 at AO_SSAO_EDGE_BAND_PIXELS
+//                  inside it (ao_ssao_screen_weight; behind the camera it projects to
+//                  infinity, past the border); the sum is divided by max(judged, 1), so
+//                  it falls to 0 continuously as the last samples leave the screen;
+//   silhouettes    both readings of ao_depth_at are voted on and mixed by depth.glsl's
+//                  ao_depth_plane_weight;
+//   point clouds   ssao_point_cloud.glsl's billboard test is a weight, the cavity AO mixed
+//                  with the hemisphere's by it.
+// What stays a step is what is no judgement of degree: a background texel (the sky has no
+// depth to be near to) and a non-finite value.
 
 #if !defined(AO_PASS_AO) || !defined(AO_TECHNIQUE_SSAO)
 #error aogen: ssao.glsl is the AO pass of the ssao technique
@@ -45,6 +66,12 @@
 #endif
 #if (defined(AO_OUTPUT_STRENGTH) + defined(AO_OUTPUT_POWER_INTENSITY)) != 1
 #error aogen: define exactly one of AO_OUTPUT_STRENGTH AO_OUTPUT_POWER_INTENSITY
+#endif
+#if (defined(AO_SSAO_DECISIONS_SMOOTH) + defined(AO_SSAO_DECISIONS_STEP)) != 1
+#error aogen: define exactly one of AO_SSAO_DECISIONS_SMOOTH AO_SSAO_DECISIONS_STEP
+#endif
+#if defined(AO_SSAO_DECISIONS_SMOOTH) && !(defined(AO_SSAO_VOTE_BAND) && defined(AO_SSAO_SELF_BAND_PIXELS) && defined(AO_SSAO_EDGE_BAND_PIXELS) && defined(AO_DEPTH_PLANE_BAND))
+#error aogen: smooth decisions need the bands AO_SSAO_*_BAND*, AO_DEPTH_PLANE_BAND (codegen writes them)
 #endif
 
 // The tangent frame (columns t, b, n) around unit normal n, its tangent the part of the
@@ -82,29 +109,89 @@ float ao_ssao_radius(vec3 P)
 }
 
 // The weight of an occluded sample whose scene point is |dz| away in view depth, for a
-// hemisphere of `radius`: the ratio in float, the smoothstep of it (in [0, 1]) in ao_half.
+// hemisphere of `radius` (> 0: ao_ssao_radius): the ratio in float, the smoothstep of it (in
+// [0, 1]) in ao_half. Without a branch: the ratio is clamped to 1 where the weight is 0 (taos)
+// or 1 (seed004) from there on, which smoothstep gives exactly.
 ao_half ao_ssao_range_weight(float abs_dz, float radius)
 {
 #if defined(AO_RANGE_CHECK_TAOS)
-    // 1 - smoothstep(0, radius, |dz|), written so that radius 0 is a step, not 0 / 0.
-    if (!(abs_dz < radius)) return ao_half(0.0);
-    return ao_half(1.0) - smoothstep(ao_half(0.0), ao_half(1.0), ao_half(abs_dz / radius)); // radius > abs_dz >= 0
+    // 1 - smoothstep(0, radius, |dz|): 0 from |dz| = radius on.
+    return ao_half(1.0) - smoothstep(ao_half(0.0), ao_half(1.0), ao_half(min(abs_dz / radius, 1.0)));
 #else
     // smoothstep(0, 1, radius / |dz|): 1 for |dz| <= radius, |dz| = 0 included.
-    if (abs_dz <= radius) return ao_half(1.0);
-    return smoothstep(ao_half(0.0), ao_half(1.0), ao_half(radius / max(abs_dz, 1e-30)));
+    return smoothstep(ao_half(0.0), ao_half(1.0), ao_half(min(radius / max(abs_dz, 1e-30), 1.0)));
 #endif
 }
 
-float ao_pass(ivec2 target_pixel)
+// A sample's vote at the bias: is the scene's view z where it projects, `scene_z`, in front
+// of the sample's own, `sample_z`, by more than `bias`? A step (the seeds'), or a ramp over
+// AO_SSAO_VOTE_BAND of the radius past the bias (DECISIONS above).
+float ao_ssao_vote(float scene_z, float sample_z, float bias, float radius)
 {
-    ivec2 p = ao_full_pixel(target_pixel);
-    float depth = ao_load_depth(p);
-    if (ao_is_background(depth)) return 1.0;
-#if defined(AO_POINT_CLOUD_FALLBACK)
-    float cavity_ao;
-    if (ao_point_cloud_billboard(p, depth, cavity_ao)) return cavity_ao;
+#if defined(AO_SSAO_DECISIONS_SMOOTH)
+    return clamp((scene_z - (sample_z + bias)) / max(AO_SSAO_VOTE_BAND * radius, 1e-30), 0.0, 1.0);
+#else
+    return scene_z > sample_z + bias ? 1.0 : 0.0;
 #endif
+}
+
+// The occlusion one sample adds, in [0, 1]: its vote times the range check's weight of the
+// scene point's depth difference from the pixel's (non-finite scene z: none).
+float ao_ssao_occlusion(float pixel_z, float sample_z, float scene_z, float radius, float bias)
+{
+    if (!ao_is_finite(scene_z)) return 0.0;
+    float vote = ao_ssao_vote(scene_z, sample_z, bias, radius);
+    return vote * float(ao_ssao_range_weight(abs(pixel_z - scene_z), radius));
+}
+
+#if defined(AO_SSAO_DECISIONS_SMOOTH)
+// How much of a sample at screen position `pos` (full-resolution pixels) the screen judges:
+// 1 inside, falling to 0 over the last AO_SSAO_EDGE_BAND_PIXELS before the border; 0 past it
+// and for a NaN position.
+float ao_ssao_screen_weight(vec2 pos, vec2 fsize)
+{
+    vec2 inside = min(pos, fsize - pos);
+    float d = min(inside.x, inside.y);
+    return d > 0.0 ? min(d / AO_SSAO_EDGE_BAND_PIXELS, 1.0) : 0.0;
+}
+
+// How much a sample at `pos` counts against pixel `p`'s surface: 0 inside p's own texel (a
+// comparison of the surface with itself, which can only measure depth quantization), rising
+// to 1 over AO_SSAO_SELF_BAND_PIXELS past its edge (in the larger of x and y).
+float ao_ssao_self_weight(vec2 pos, ivec2 p)
+{
+    vec2 off = abs(pos - (vec2(p) + 0.5));
+    return clamp((max(off.x, off.y) - 0.5) / AO_SSAO_SELF_BAND_PIXELS, 0.0, 1.0);
+}
+#endif
+
+// The share of the judged samples occluded: the weighted count `occlusion` over `judged`
+// (step: 0 when none is judged; smooth: over at least 1, so the share falls to 0 as the last
+// samples leave the screen rather than jumping there).
+float ao_ssao_occluded(float occlusion, float judged)
+{
+#if defined(AO_SSAO_DECISIONS_SMOOTH)
+    return occlusion / max(judged, 1.0);
+#else
+    return judged > 0.0 ? occlusion / judged : 0.0;
+#endif
+}
+
+// The output of an occluded share (the variant's output form; the settings are u's).
+float ao_ssao_output(float occluded, float strength, float power, float intensity)
+{
+#if defined(AO_OUTPUT_STRENGTH)
+    return clamp(1.0 - occluded * strength, 0.0, 1.0);
+#else
+    float visibility = 1.0 - occluded;
+    float ao = visibility > 0.0 ? pow(visibility, power) : 0.0;
+    return clamp(ao_lerp(1.0, ao, intensity), 0.0, 1.0);
+#endif
+}
+
+// The hemisphere estimate of full-resolution pixel p (its depth `depth`, not background).
+float ao_ssao_hemisphere(ivec2 target_pixel, ivec2 p, float depth)
+{
     vec3 P = ao_view_position(ao_pixel_uv(p), depth);
     if (!ao_is_finite(P)) return 1.0;
     vec3 V = ao_view_direction(P);
@@ -128,6 +215,24 @@ float ao_pass(ivec2 target_pixel)
         if (!(clip.w > 1e-30)) continue; // behind the camera (perspective)
         vec2 ndc = clip.xy / clip.w;
         vec2 uv = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5);
+#if defined(AO_SSAO_DECISIONS_SMOOTH)
+        vec2 pos = uv * fsize;
+        float on_screen = ao_ssao_screen_weight(pos, fsize);
+        if (!(on_screen > 0.0)) continue; // off screen, or a NaN
+        judged += on_screen;
+        float counts = ao_ssao_self_weight(pos, p);
+        if (!(counts > 0.0)) continue; // its own texel: judged open
+        // The two readings of the scene's depth where S projects, mixed by how far the
+        // texels around it lie on one plane (depth.glsl's ao_depth_readings).
+        float texel_depth, plane_depth, plane_weight;
+        vec2 texel_at;
+        int level = ao_tap_level(length(pos - (vec2(p) + 0.5))); // its depth MIP level (0 without a chain)
+        if (!ao_depth_readings(pos, level, texel_depth, texel_at, plane_depth, plane_weight)) continue; // background: judged open
+        float occ = 0.0;
+        if (plane_weight < 1.0) occ = ao_ssao_occlusion(P.z, S.z, ao_view_z(texel_at / fsize, texel_depth), radius, bias);
+        if (plane_weight > 0.0) occ = ao_lerp(occ, ao_ssao_occlusion(P.z, S.z, ao_view_z(pos / fsize, plane_depth), radius, bias), plane_weight);
+        occlusion += on_screen * counts * occ;
+#else
         // Off screen (a NaN fails every comparison and is skipped too).
         if (!(uv.x >= 0.0 && uv.y >= 0.0 && uv.x < 1.0 && uv.y < 1.0)) continue;
         judged += 1.0;
@@ -140,16 +245,26 @@ float ao_pass(ivec2 target_pixel)
         int level = ao_tap_level(length(pos - (vec2(p) + 0.5))); // its depth MIP level (0 without a chain)
         if (!ao_depth_at(pos, level, scene_depth, at, q)) continue; // background: judged open
         if (q == p) continue; // its own texel: a self-comparison that can only measure depth quantization
-        float scene_z = ao_view_z(at / fsize, scene_depth);
-        if (scene_z > S.z + bias && ao_is_finite(scene_z))
-            occlusion += float(ao_ssao_range_weight(abs(P.z - scene_z), radius));
+        occlusion += ao_ssao_occlusion(P.z, S.z, ao_view_z(at / fsize, scene_depth), radius, bias);
+#endif
     }
-    float occluded = judged > 0.0 ? occlusion / judged : 0.0;
-#if defined(AO_OUTPUT_STRENGTH)
-    return clamp(1.0 - occluded * u.strength, 0.0, 1.0);
+    return ao_ssao_output(ao_ssao_occluded(occlusion, judged), u.strength, u.power, u.intensity);
+}
+
+float ao_pass(ivec2 target_pixel)
+{
+    ivec2 p = ao_full_pixel(target_pixel);
+    float depth = ao_load_depth(p);
+    if (ao_is_background(depth)) return 1.0;
+#if defined(AO_POINT_CLOUD_FALLBACK)
+    // A billboard's interior takes the depth-cavity AO (a weight in [0, 1]: a step with the
+    // seeds' decisions); only a partial billboard pays for both estimates.
+    float cavity_ao;
+    float billboard = ao_point_cloud_billboard(p, depth, cavity_ao);
+    if (billboard >= 1.0) return cavity_ao;
+    float hemisphere = ao_ssao_hemisphere(target_pixel, p, depth);
+    return billboard > 0.0 ? ao_lerp(hemisphere, cavity_ao, billboard) : hemisphere;
 #else
-    float visibility = 1.0 - occluded;
-    float ao = visibility > 0.0 ? pow(visibility, u.power) : 0.0;
-    return clamp(ao_lerp(1.0, ao, u.intensity), 0.0, 1.0);
+    return ao_ssao_hemisphere(target_pixel, p, depth);
 #endif
 }

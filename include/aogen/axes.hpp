@@ -14,6 +14,7 @@
 //     normal_source      G-buffer world or view normals, or reconstructed from depth
 //     ssao_output        how SSAO turns its occlusion sum into AO
 //     ssao_range_check   how SSAO weights an occluding sample by its depth difference
+//     ssao_decisions     whether SSAO's per-sample decisions are smooth weights or steps
 //     blur_mode          the denoise pass: bilateral, box, denoise or none
 //     bilateral_depth    the bilateral blur's depth term
 //     upsample_mode      how a half-resolution target reaches the screen
@@ -126,6 +127,25 @@ inline constexpr std::array<enum_name<ssao_range_check>, 2> ssao_range_check_nam
     {ssao_range_check::seed004, "seed004"},
 }};
 
+// How SSAO decides, per sample, whether the sample is occluded, judged at all, or read from
+// the plane or the texel under it (templates/ssao.glsl; the bands are params.hpp's
+// ssao_bands).
+enum class ssao_decisions {
+    // Ours, the default: every decision a weight that moves continuously with its input over
+    // a narrow band -- the vote past the bias, the own-texel skip, the screen's border, the
+    // plane-or-texel reading at silhouettes, the point-cloud billboard test. A depth that
+    // rounds differently (another depth convention, another GPU) then moves a pixel by
+    // about as much as it moved the depth, never by a whole vote times the strength.
+    smooth,
+    // The seeds' steps: a sample is occluded or not (scene z > sample z + bias), judged or
+    // not, read from the plane or from its texel. What the seeds' presets compile.
+    step,
+};
+inline constexpr std::array<enum_name<ssao_decisions>, 2> ssao_decisions_names{{
+    {ssao_decisions::smooth, "smooth"},
+    {ssao_decisions::step, "step"},
+}};
+
 // The denoise pass after the AO pass.
 enum class blur_mode {
     bilateral,  // Taos 'quality': two-pass separable 7-tap Gaussian with a depth term
@@ -179,7 +199,7 @@ inline constexpr std::array<enum_name<upsample_mode>, 2> upsample_mode_names{{
 static_assert(names::distinct(technique_names) && names::distinct(pipeline_stage_names) &&
               names::distinct(projection_kind_names) && names::distinct(depth_convention_names) &&
               names::distinct(normal_source_names) && names::distinct(ssao_output_names) &&
-              names::distinct(ssao_range_check_names) && names::distinct(blur_mode_names) &&
+              names::distinct(ssao_range_check_names) && names::distinct(ssao_decisions_names) && names::distinct(blur_mode_names) &&
               names::distinct(bilateral_depth_names) && names::distinct(upsample_mode_names));
 
 // Enum -> canonical name. A value outside the enumeration throws aogen::error.
@@ -190,6 +210,7 @@ inline const char* to_name(depth_convention v) { return names::name_of(depth_con
 inline const char* to_name(normal_source v) { return names::name_of(normal_source_names, v, "normals"); }
 inline const char* to_name(ssao_output v) { return names::name_of(ssao_output_names, v, "output"); }
 inline const char* to_name(ssao_range_check v) { return names::name_of(ssao_range_check_names, v, "range check"); }
+inline const char* to_name(ssao_decisions v) { return names::name_of(ssao_decisions_names, v, "decisions"); }
 inline const char* to_name(blur_mode v) { return names::name_of(blur_mode_names, v, "blur"); }
 inline const char* to_name(bilateral_depth v) { return names::name_of(bilateral_depth_names, v, "bilateral depth"); }
 inline const char* to_name(upsample_mode v) { return names::name_of(upsample_mode_names, v, "upsample"); }
@@ -211,6 +232,10 @@ inline ssao_output ssao_output_from_name(std::string_view name, std::string_view
 inline ssao_range_check ssao_range_check_from_name(std::string_view name, std::string_view subject = "range check")
 {
     return names::value_of(ssao_range_check_names, name, subject);
+}
+inline ssao_decisions ssao_decisions_from_name(std::string_view name, std::string_view subject = "decisions")
+{
+    return names::value_of(ssao_decisions_names, name, subject);
 }
 inline blur_mode blur_mode_from_name(std::string_view name, std::string_view subject = "blur")
 {

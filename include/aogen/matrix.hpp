@@ -51,6 +51,7 @@ struct variant_matrix {
     std::vector<pipeline_stage> stage{pipeline_stage::compute};
     std::vector<ssao_range_check> range_check{ssao_range_check::taos};
     std::vector<ssao_output> output{ssao_output::strength};
+    std::vector<ssao_decisions> decisions{ssao_decisions::smooth};
     std::vector<bool> fp16{false};
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
 };
@@ -70,7 +71,7 @@ inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40
     size_t product = 1;
     for (size_t n : {m.techniques.size(), m.ssao_samples.size(), m.gtao_slices.size(), m.gtao_steps.size(), m.blur.size(), m.blur_depth.size(),
                      m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
-                     m.stage.size(), m.range_check.size(), m.output.size(), m.fp16.size(), m.upsample.size()})
+                     m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size()})
         product = n == 0 ? 0 : std::min(product * std::min(n, cap + 1), cap + 1);
     return product;
 }
@@ -96,12 +97,13 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (pipeline_stage stage : m.stage)
     for (ssao_range_check rc : m.range_check)
     for (ssao_output o : m.output)
+    for (ssao_decisions dec : m.decisions)
     for (bool fp16 : m.fp16)
     for (upsample_mode up : m.upsample) {
         v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
-        v.range_check = rc, v.output = o, v.fp16 = fp16, v.upsample = up;
+        v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up;
         if (pc && t != technique::ssao) continue;
         validate(v);
         const variant c = canonical(v);

@@ -142,6 +142,37 @@ inline constexpr float cavity_threshold = 0.0002f;
 inline constexpr int ring_pixels = 3;
 } // namespace point_cloud
 
+// The bands over which SSAO's smooth decisions (variant::decisions, ssao_decisions::smooth;
+// templates/ssao.glsl) hand over from one outcome to the other where the seeds step: each
+// starts at the seeds' threshold and is as narrow as keeps the weight's slope harmless -- a
+// depth one rounding step off moves the weight by that step over the band, under 1/255
+// (tests/compiler/test_ssao_decisions.cpp) -- and wide enough that the depth conventions'
+// rounding (reversed against standard depth: up to 1e-3 of the radius on distant surfaces)
+// falls well inside it.
+namespace ssao_bands {
+// The vote rises from 0 at scene z = sample z + bias to 1 this share of the radius farther
+// toward the camera.
+inline constexpr float vote_per_radius = 0.05f;
+// A sample counts from 0 at its pixel's own texel's edge (half a pixel from the pixel's
+// centre, in the larger of x and y) to fully this many pixels farther out: a sample in its
+// own texel compares the surface with itself and can measure only depth quantization.
+inline constexpr float self_pixels = 1.0f;
+// A sample is judged from 0 at the screen's border to fully this many pixels inside it.
+inline constexpr float edge_pixels = 1.0f;
+// The plane reading (the bilinear depth under the sample) hands over to the texel reading
+// (its texel's own depth at its centre) as the four texels around the sample go off one
+// plane: over this share of their spread past depth.glsl's silhouette threshold (a quarter
+// of the spread).
+inline constexpr float plane_per_spread = 0.2f;
+// The point-cloud fallback's tests (point_cloud above). A neighbour is at the same depth
+// within the tolerance, and not from 1 + this many tolerances on: the tolerance, 5e-6, is only
+// 84 ulps of a depth near 1, so a narrower band would step by more than 1/255 per ulp.
+inline constexpr float point_cloud_same_per_tolerance = 4.0f;
+// A ring neighbour is a cavity's rim from the threshold on, fully from 1 + this many
+// thresholds.
+inline constexpr float point_cloud_cavity_per_threshold = 1.0f;
+} // namespace ssao_bands
+
 // How far from its pixel a slice tap (GTAO, VBAO) may read the texel under it at the texel's
 // centre instead of the plane's depth under the tap itself (common/slices.glsl's
 // ao_slice_tap_surface). The texel's centre is a true surface point, up to 0.71 pixels off the

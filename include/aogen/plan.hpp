@@ -260,6 +260,16 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
     }
     if (pass == pass_kind::ao && has_prefilter_pass(v)) c.push_back({"AO_MIP_LEVEL_OFFSET", glsl_float(depth_mips::level_offset)});
     if (pass == pass_kind::ao && has_slices(v.tech)) c.push_back({"AO_SLICE_TEXEL_CENTRE_PIXELS", glsl_float(slice_taps::texel_centre_pixels)});
+    if (pass == pass_kind::ao && v.tech == technique::ssao && v.decisions == ssao_decisions::smooth) {
+        c.push_back({"AO_SSAO_VOTE_BAND", glsl_float(ssao_bands::vote_per_radius)});
+        c.push_back({"AO_SSAO_SELF_BAND_PIXELS", glsl_float(ssao_bands::self_pixels)});
+        c.push_back({"AO_SSAO_EDGE_BAND_PIXELS", glsl_float(ssao_bands::edge_pixels)});
+        c.push_back({"AO_DEPTH_PLANE_BAND", glsl_float(ssao_bands::plane_per_spread)});
+        if (v.point_cloud_fallback) {
+            c.push_back({"AO_PC_SAME_BAND", glsl_float(ssao_bands::point_cloud_same_per_tolerance)});
+            c.push_back({"AO_PC_CAVITY_BAND", glsl_float(ssao_bands::point_cloud_cavity_per_threshold)});
+        }
+    }
     if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
         c.push_back({"AO_PC_BACKGROUND_DEPTH", glsl_float(point_cloud::background_depth)});
         c.push_back({"AO_PC_SAME_DEPTH", glsl_float(point_cloud::same_depth_tolerance)});

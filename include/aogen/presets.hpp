@@ -56,14 +56,16 @@ inline blur_params taos_quality_blur()
     return b;
 }
 
-// The variant every seed engine runs its pass as: a fullscreen fragment pass, and a
-// half-resolution target left for the engine to upsample (the seeds have no upsample pass).
+// The variant every seed engine runs its pass as: a fullscreen fragment pass, a
+// half-resolution target left for the engine to upsample (the seeds have no upsample pass)
+// and, for SSAO, the seeds' step decisions (a sample occluded or not at the bias).
 inline variant seed_engine_variant(technique t)
 {
     variant v;
     v.tech = t;
     v.stage = pipeline_stage::fragment;
     v.upsample = upsample_mode::nearest;
+    v.decisions = ssao_decisions::step;
     return v;
 }
 

@@ -15,7 +15,8 @@
 //   normals, depth, projection, stage; then only the axes that differ from their
 //   default, each a token of its own: `rawdepth` (seed-exact bilateral depth term),
 //   `pc` (point-cloud fallback), `rc004` (seed 004's range check), `powint` (Unique
-//   Engine's power/intensity output), `fp16` (16-bit arithmetic in the AO pass), `nearest`
+//   Engine's power/intensity output), `step` (the seeds' step decisions in SSAO, not
+//   ours smooth ones), `fp16` (16-bit arithmetic in the AO pass), `nearest`
 //   (a half-resolution target left for the caller to upsample), `mip5` (a depth MIP chain of
 //   5 levels, read by far taps: depth_mips.hpp), `deint` (the AO pass dispatched as 4 x 4
 //   interleaved layers), `wg16x16` (workgroup size).
@@ -76,6 +77,8 @@ struct variant {
     int workgroup_x = 8, workgroup_y = 8;
     ssao_range_check range_check = ssao_range_check::taos; // ssao only
     ssao_output output = ssao_output::strength;            // ssao only
+    // SSAO's per-sample decisions: smooth weights (ours) or the seeds' steps (axes.hpp).
+    ssao_decisions decisions = ssao_decisions::smooth;     // ssao only
     // 16-bit floats for the AO pass's arithmetic where its precision allows it (GTAO's
     // slice integration and horizon cosines, SSAO's tangent frame, sample offsets and
     // weights); depth reconstruction, screen positions and sums stay 32-bit. Needs the
@@ -133,6 +136,7 @@ inline void validate(const variant& v)
     names::require_listed(pipeline_stage_names, v.stage, "stage");
     names::require_listed(ssao_range_check_names, v.range_check, "range check");
     names::require_listed(ssao_output_names, v.output, "output");
+    names::require_listed(ssao_decisions_names, v.decisions, "decisions");
     names::require_listed(upsample_mode_names, v.upsample, "upsample");
     require_in("workgroup x", v.workgroup_x, variant::workgroup_side_range);
     require_in("workgroup y", v.workgroup_y, variant::workgroup_side_range);
@@ -257,6 +261,7 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
             count("AO_SSAO_SAMPLES", v.ssao_samples);
             choice("RANGE_CHECK", names::name_of(ssao_range_check_names, v.range_check, "range check"));
             choice("OUTPUT", names::name_of(ssao_output_names, v.output, "output"));
+            choice("SSAO_DECISIONS", names::name_of(ssao_decisions_names, v.decisions, "decisions"));
             if (v.point_cloud_fallback) d.push_back({"AO_POINT_CLOUD_FALLBACK", ""});
         } else if (v.tech == technique::gtao) {
             count("AO_GTAO_SLICES", v.gtao_slices);
@@ -290,7 +295,7 @@ inline variant canonical(variant v)
 {
     const variant d;
     if (v.tech != technique::ssao) {
-        v.ssao_samples = d.ssao_samples, v.range_check = d.range_check, v.output = d.output;
+        v.ssao_samples = d.ssao_samples, v.range_check = d.range_check, v.output = d.output, v.decisions = d.decisions;
         v.point_cloud_fallback = d.point_cloud_fallback;
     }
     if (!has_slices(v.tech)) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
@@ -307,7 +312,7 @@ inline bool operator==(const variant& a, const variant& b)
            x.gtao_steps == y.gtao_steps && x.blur == y.blur && x.blur_depth == y.blur_depth && x.normals == y.normals &&
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
-           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.fp16 == y.fp16 &&
+           x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.decisions == y.decisions && x.fp16 == y.fp16 &&
            x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
@@ -373,6 +378,7 @@ inline std::string name_of(const variant& input)
     if (v.point_cloud_fallback) name += "-pc";
     if (v.range_check != d.range_check) name += "-rc004";
     if (v.output != d.output) name += "-powint";
+    if (v.decisions != d.decisions) name += "-step";
     if (v.fp16) name += "-fp16";
     if (v.upsample != d.upsample) name += "-nearest";
     if (v.depth_mips != d.depth_mips) name += "-mip" + std::to_string(v.depth_mips);
@@ -427,6 +433,7 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "pc") v.point_cloud_fallback = true;
         else if (x == "rc004") v.range_check = ssao_range_check::seed004;
         else if (x == "powint") v.output = ssao_output::power_intensity;
+        else if (x == "step") v.decisions = ssao_decisions::step;
         else if (x == "fp16") v.fp16 = true;
         else if (x == "nearest") v.upsample = upsample_mode::nearest;
         else if (x == "deint") v.deinterleaved = true;
@@ -436,7 +443,7 @@ inline variant variant_from_name(const std::string& name)
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, fp16, nearest, mip<N>, deint, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, wg<X>x<Y>");
     }
     try {
         validate(v);

@@ -107,15 +107,24 @@ vec4 ao_depth_quad(ivec2 i0)
 #endif
 }
 
+// The plane test of four raw depths of a 2 x 2 block (d00, d10 the first row): x, how far
+// their diagonals' sums differ; y, the threshold past which they lie off one plane (a quarter
+// of their spread, with a few ulps of slack for the rounding of depths near 1); z, the spread.
+vec3 ao_depth_planarity(float d00, float d10, float d01, float d11)
+{
+    float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
+    float planarity = abs(d00 + d11 - d10 - d01);
+    return vec3(planarity, 0.25 * spread + 2.5e-7 * abs(d00), spread);
+}
+
 // Do four raw depths of a 2 x 2 block (d00, d10 the first row) lie off one plane? On a plane
 // their diagonals' sums agree: raw depth is affine on screen over a plane (ao_depth_at). Off
 // it when the sums differ by more than a quarter of the block's spread (a silhouette), with a
 // few ulps of slack for the rounding of depths near 1.
 bool ao_depth_off_plane(float d00, float d10, float d01, float d11)
 {
-    float spread = abs(d10 - d00) + abs(d01 - d00) + abs(d11 - d00);
-    float planarity = abs(d00 + d11 - d10 - d01);
-    return planarity > 0.25 * spread + 2.5e-7 * abs(d00);
+    vec3 test = ao_depth_planarity(d00, d10, d01, d11);
+    return test.x > test.y;
 }
 
 // Of two raw depths (neither background), the one nearer the camera.
@@ -182,6 +191,51 @@ vec4 ao_mip_quad(ivec2 i0, int level)
 }
 #endif
 
+// The four texels of level `level` whose centres surround screen position `pos` (full-
+// resolution pixels), in textureGather's order; `f`, pos's place between their centres; and
+// pos's own texel among them (the one whose centre is within half a texel): its depth, its
+// centre `at` in full-resolution pixels and `nearest`, the full-resolution pixel under it.
+vec4 ao_depth_around(vec2 pos, int level, out vec2 f, out float own_depth, out vec2 at, out ivec2 nearest)
+{
+    ivec2 size = ao_depth_size();
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    float texel = ao_exp2i(level); // a level-`level` texel's side in pixels
+    ivec2 level_size = level == 0 ? size : ao_mip_size(level);
+    vec2 t = pos * ao_exp2i(-level) - 0.5; // exact: a power of two
+#else
+    ivec2 level_size = size;
+    vec2 t = pos - 0.5;
+#endif
+    ivec2 i0 = ivec2(floor(t));
+    f = t - floor(t);
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    vec4 g;
+    if (level == 0) g = ao_depth_quad(i0); // a branch, not a select: one of the two reads per tap
+    else g = ao_mip_quad(i0, level);
+#else
+    vec4 g = ao_depth_quad(i0);
+#endif
+    float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
+    ivec2 own = clamp(i0 + ivec2(greaterThanEqual(f, vec2(0.5))), ivec2(0), level_size - 1);
+    own_depth = f.y >= 0.5 ? (f.x >= 0.5 ? d11 : d01) : (f.x >= 0.5 ? d10 : d00);
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    at = (vec2(own) + 0.5) * texel;
+    nearest = level == 0 ? own : clamp(ivec2(floor(at)), ivec2(0), size - 1);
+#else
+    // Without a chain, exactly the arithmetic of before it: a tap is ALU-bound, and the
+    // conversions above cost every variant 5-7 % on the H200 (BENCHMARKS.md, 2026-12-03).
+    at = vec2(own) + 0.5;
+    nearest = own;
+#endif
+    return g;
+}
+
+// The bilinear mix of four depths `g` (textureGather's order) at `f` between their centres.
+float ao_depth_bilinear(vec4 g, vec2 f)
+{
+    return ao_lerp(ao_lerp(g.w, g.z, f.x), ao_lerp(g.x, g.y, f.x), f.y);
+}
+
 // The raw depth of the surface a sample at screen position `pos` (full-resolution pixels,
 // centres at +0.5) lands on, and `at`, the screen position that depth belongs to; false on
 // background. `nearest` gets pos's texel.
@@ -206,44 +260,47 @@ vec4 ao_mip_quad(ivec2 i0, int level)
 // Level 0 is the depth buffer, read as without a chain.
 bool ao_depth_at(vec2 pos, int level, out float depth, out vec2 at, out ivec2 nearest)
 {
-    ivec2 size = ao_depth_size();
-#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
-    float texel = ao_exp2i(level); // a level-`level` texel's side in pixels
-    ivec2 level_size = level == 0 ? size : ao_mip_size(level);
-    vec2 t = pos * ao_exp2i(-level) - 0.5; // exact: a power of two
-#else
-    ivec2 level_size = size;
-    vec2 t = pos - 0.5;
-#endif
-    ivec2 i0 = ivec2(floor(t));
-    vec2 f = t - floor(t);
-#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
-    vec4 g;
-    if (level == 0) g = ao_depth_quad(i0); // a branch, not a select: one of the two reads per tap
-    else g = ao_mip_quad(i0, level);
-#else
-    vec4 g = ao_depth_quad(i0);
-#endif
+    vec2 f;
+    vec4 g = ao_depth_around(pos, level, f, depth, at, nearest);
     float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
-    // pos's own texel is one of the four: the one whose centre is within half a texel.
-    ivec2 own = clamp(i0 + ivec2(greaterThanEqual(f, vec2(0.5))), ivec2(0), level_size - 1);
-    depth = f.y >= 0.5 ? (f.x >= 0.5 ? d11 : d01) : (f.x >= 0.5 ? d10 : d00);
-#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
-    at = (vec2(own) + 0.5) * texel;
-    nearest = level == 0 ? own : clamp(ivec2(floor(at)), ivec2(0), size - 1);
-#else
-    // Without a chain, exactly the arithmetic of before it: a tap is ALU-bound, and the
-    // conversions above cost every variant 5-7 % on the H200 (BENCHMARKS.md, 2026-12-03).
-    at = vec2(own) + 0.5;
-    nearest = own;
-#endif
     if (ao_is_background(depth)) return false;
     if (ao_is_background(d00) || ao_is_background(d10) || ao_is_background(d01) || ao_is_background(d11)) return true;
     if (ao_depth_off_plane(d00, d10, d01, d11)) return true; // not one plane
-    depth = ao_lerp(ao_lerp(d00, d10, f.x), ao_lerp(d01, d11, f.x), f.y);
+    depth = ao_depth_bilinear(g, f);
     at = pos;
     return true;
 }
+
+#if defined(AO_DEPTH_PLANE_BAND)
+// How far the four depths `g` (textureGather's order, none background) lie on one plane: 1
+// up to ao_depth_off_plane's threshold, falling linearly to 0 over AO_DEPTH_PLANE_BAND of
+// their spread past it. Continuous in every depth (four alike: 1, with no 0 / 0).
+float ao_depth_plane_weight(vec4 g)
+{
+    vec3 test = ao_depth_planarity(g.w, g.z, g.x, g.y);
+    return clamp(1.0 - (test.x - test.y) / max(AO_DEPTH_PLANE_BAND * test.z, 1e-30), 0.0, 1.0);
+}
+
+// ao_depth_at's two readings of the surface under `pos`, for a caller that blends them
+// rather than switching between them (ssao.glsl's smooth decisions): the texel reading,
+// pos's own texel's depth `texel_depth` at its centre `texel_at`; the plane reading, the
+// bilinear depth `plane_depth` under pos itself; and `plane_weight`, how far to trust the
+// plane reading (ao_depth_plane_weight; 0 beside background, where only the texel is a
+// surface). False when pos's own texel is background.
+bool ao_depth_readings(vec2 pos, int level, out float texel_depth, out vec2 texel_at, out float plane_depth, out float plane_weight)
+{
+    vec2 f;
+    ivec2 nearest;
+    vec4 g = ao_depth_around(pos, level, f, texel_depth, texel_at, nearest);
+    plane_depth = texel_depth;
+    plane_weight = 0.0;
+    if (ao_is_background(texel_depth)) return false;
+    if (ao_is_background(g.x) || ao_is_background(g.y) || ao_is_background(g.z) || ao_is_background(g.w)) return true;
+    plane_weight = ao_depth_plane_weight(g);
+    if (plane_weight > 0.0) plane_depth = ao_depth_bilinear(g, f);
+    return true;
+}
+#endif
 
 // The surface point of the texel under screen position `pos` (full-resolution pixels): its
 // own depth at its centre (at, and nearest, the texel); false on background. One fetch, no

@@ -175,6 +175,8 @@ up = cs['passes'][3]
 assert {(x['binding'], x['kind']) for x in up['wgsl_bindings']} >= {(3, 'sampled_image'), (4, 'sampler')}, up['wgsl_bindings']
 assert [p['outputs']['wgsl'].split('/')[-1] for p in fs['passes']] == ['ao.vert.wgsl', 'ao.frag.wgsl', 'blur_box.vert.wgsl', 'blur_box.frag.wgsl']
 "
+  check "WGSL beside every other target (a shader whose WebGPU form is its ordinary one once lost its HLSL: map::at)" \
+    "$aogen" generate --quiet --out "$work/alltargets" --targets spv,glsl,essl,hlsl,msl,wgsl ssao-s8-half-box-gbufview-rev-ortho-fs-pc-powint
   check "the header has the WGSL binding numbers" grep -q "ao_comp_wgsl_binding_u_depth_sampler = 2;" "$work/wgsl/aogen_variants.hpp"
   expect_error "an fp16 variant has no WGSL" "fp16.ao.comp: does 16-bit float arithmetic.*shader-f16" generate --targets wgsl --out "$work/no16" gtao-3x3-half-bilateral-gbufworld-std-persp-cs-fp16
   check "and nothing was written" test ! -e "$work/no16"

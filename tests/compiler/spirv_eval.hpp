@@ -196,6 +196,18 @@ inline std::vector<float> run_main(const std::vector<uint32_t>& words, size_t co
             case GLSLstd450Floor: values[w[2]] = map(a, [](float x) { return std::floor(x); }); break;
             case GLSLstd450FAbs: values[w[2]] = map(a, [](float x) { return std::fabs(x); }); break;
             case GLSLstd450FSign: values[w[2]] = map(a, [](float x) { return float(x > 0) - float(x < 0); }); break;
+            case GLSLstd450SmoothStep: {
+                const std::vector<double> e0 = value(a), e1 = value(w[6]);
+                std::vector<double> r = value(w[7]);
+                REQUIRE(e0.size() == r.size());
+                REQUIRE(e1.size() == r.size());
+                for (size_t k = 0; k < r.size(); ++k) {
+                    const float t = std::min(std::max((float(r[k]) - float(e0[k])) / (float(e1[k]) - float(e0[k])), 0.0f), 1.0f);
+                    r[k] = t * t * (3.0f - 2.0f * t);
+                }
+                values[w[2]] = r;
+                break;
+            }
             case GLSLstd450FClamp: {
                 const std::vector<double> lo = value(w[6]), hi = value(w[7]);
                 std::vector<double> r = value(a);

@@ -8,6 +8,7 @@
 // Matrix keys (each a list; an absent key keeps the default variant's value):
 //   technique, samples, slices, steps, blur, bilateral_depth, normals, point_cloud,
 //   depth, projection, resolution (half|full), stage, range_check, output,
+//   decisions (smooth|step: SSAO's per-sample decisions, variant extra -step),
 //   precision (fp32|fp16: 16-bit arithmetic in the AO pass, variant extra -fp16),
 //   upsample (depth_aware|nearest: how a half-resolution target reaches the screen,
 //   variant extra -nearest).
@@ -95,7 +96,7 @@ inline void require_axes_used(const json_reader& in, const std::vector<technique
 {
     const bool ssao = std::find(techniques.begin(), techniques.end(), technique::ssao) != techniques.end();
     const bool slices = std::any_of(techniques.begin(), techniques.end(), has_slices);
-    for (const char* key : {"samples", "point_cloud", "range_check", "output"})
+    for (const char* key : {"samples", "point_cloud", "range_check", "output", "decisions"})
         if (in.has(key) && !ssao)
             fail(key_path(in.path(), key), "is an SSAO axis, and this matrix makes no SSAO variant", "valid: leave it out, or add \"ssao\" to technique");
     for (const char* key : {"slices", "steps"})
@@ -106,7 +107,7 @@ inline void require_axes_used(const json_reader& in, const std::vector<technique
 inline variant_matrix matrix_from_json(const json_reader& in)
 {
     in.only_keys({"technique", "samples", "slices", "steps", "blur", "bilateral_depth", "normals", "point_cloud",
-                  "depth", "projection", "resolution", "stage", "range_check", "output", "precision", "upsample"});
+                  "depth", "projection", "resolution", "stage", "range_check", "output", "decisions", "precision", "upsample"});
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
     require_axes_used(in, m.techniques);
@@ -123,6 +124,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     if (in.has("stage")) m.stage = name_list(in, "stage", pipeline_stage_names);
     if (in.has("range_check")) m.range_check = name_list(in, "range_check", ssao_range_check_names);
     if (in.has("output")) m.output = name_list(in, "output", ssao_output_names);
+    if (in.has("decisions")) m.decisions = name_list(in, "decisions", ssao_decisions_names);
     if (in.has("precision")) m.fp16 = bool_list(in, "precision", "fp16", "fp32");
     if (in.has("upsample")) m.upsample = name_list(in, "upsample", upsample_mode_names);
     return m;
