@@ -351,7 +351,7 @@ TEST_CASE("codegen+glslang: without the point-cloud fallback none of its code is
         INFO(a.name << " vs " << b.name);
         // The source: no file, constant or definition of the fallback ...
         for (const char* text : {"#line 1 \"ssao_point_cloud.glsl\"", "#define AO_POINT_CLOUD_FALLBACK",
-                                 "#define AO_PC_", "bool ao_point_cloud_billboard(", "bool ao_pc_is_background("}) {
+                                 "#define AO_PC_", "float ao_point_cloud_billboard(", "bool ao_pc_is_background("}) {
             CHECK(a.glsl.find(text) != std::string::npos);
             CHECK(b.glsl.find(text) == std::string::npos);
         }

@@ -173,7 +173,9 @@ TEST_CASE("codegen: the constants come from params.hpp as GLSL float literals", 
     CHECK(value(blur, "AO_BLUR_WEIGHT_1") == "0.175");
     CHECK(value(blur, "AO_BLUR_WEIGHT_2") == "0.122");
     CHECK(value(blur, "AO_BLUR_WEIGHT_3") == "0.067");
-    CHECK(codegen::constants(v, pass_kind::ao).empty());
+    CHECK(value(codegen::constants(v, pass_kind::ao), "AO_SSAO_VOTE_BAND") == "0.05"); // smooth decisions' bands
+    v.decisions = ssao_decisions::step;
+    CHECK(codegen::constants(v, pass_kind::ao).empty()); // the seeds' steps need none
     v.point_cloud_fallback = true;
     const std::vector<define> pc = codegen::constants(v, pass_kind::ao);
     CHECK(value(pc, "AO_PC_BACKGROUND_DEPTH") == "0.9999");
