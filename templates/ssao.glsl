@@ -40,8 +40,14 @@
 // depth into a whole vote, 1 / N of the output times the strength -- 0.2 at 16 samples and a
 // strength of 3.3 -- so one scene in two depth conventions, whose depths round differently,
 // differed by that much. AO_SSAO_DECISIONS_SMOOTH (the default) makes each a weight that
-// moves continuously over a narrow band (the bands are aogen/params.hpp's ssao_bands):
-//   the vote       clamp((scene z - (S.z + bias)) / (AO_SSAO_VOTE_BAND radius), 0, 1);
+// moves continuously over a narrow band (the bands are aogen/params.hpp's ssao_bands),
+// centred on the seeds' threshold: a one-sided band moves the threshold by half its width,
+// and with the Crytek kernel's samples gathered near the pixel, many sit that close to it
+// (bands starting at the thresholds read 0.063 of the plank's true occlusion where the steps
+// read 0.264; centred, 0.240);
+//   the vote       clamp((scene z - (S.z + bias)) / band + 1/2, 0, 1), band the smaller of
+//                  AO_SSAO_VOTE_BAND radius and the bias (so a surface compared with itself
+//                  stays open; no bias, the step);
 //   the own texel  a sample counts from 0 at its pixel's texel's edge to 1 at
 //                  AO_SSAO_SELF_BAND_PIXELS past it (ao_ssao_self_weight);
 //   the screen     a sample is judged from 0 at the border to 1 at AO_SSAO_EDGE_BAND_PIXELS
@@ -129,7 +135,13 @@ ao_half ao_ssao_range_weight(float abs_dz, float radius)
 float ao_ssao_vote(float scene_z, float sample_z, float bias, float radius)
 {
 #if defined(AO_SSAO_DECISIONS_SMOOTH)
-    return clamp((scene_z - (sample_z + bias)) / max(AO_SSAO_VOTE_BAND * radius, 1e-30), 0.0, 1.0);
+    // Centred on the bias, so that over the many depth differences a pixel's samples spread
+    // across it the votes add up to what the step's add up to; at most the bias wide, so
+    // what the bias keeps open (a surface compared with itself, 0 apart) stays open.
+    float band = min(AO_SSAO_VOTE_BAND * radius, bias);
+    float over = scene_z - (sample_z + bias);
+    if (!(band > 0.0)) return over > 0.0 ? 1.0 : 0.0; // no bias: nothing to ramp within
+    return clamp(over / band + 0.5, 0.0, 1.0);
 #else
     return scene_z > sample_z + bias ? 1.0 : 0.0;
 #endif
@@ -155,9 +167,12 @@ float ao_ssao_screen_weight(vec2 pos, vec2 fsize)
     return d > 0.0 ? min(d / AO_SSAO_EDGE_BAND_PIXELS, 1.0) : 0.0;
 }
 
-// How much a sample at `pos` counts against pixel `p`'s surface: 0 inside p's own texel (a
-// comparison of the surface with itself, which can only measure depth quantization), rising
-// to 1 over AO_SSAO_SELF_BAND_PIXELS past its edge (in the larger of x and y).
+// How much a sample at `pos` counts against pixel `p`'s surface: 0 anywhere in p's own texel
+// (a comparison of the surface with itself, which can only measure depth quantization), 1
+// from AO_SSAO_SELF_BAND_PIXELS past its edge on (in the larger of x and y). Not centred on
+// the edge as the vote is: inside the texel, where a silhouette leaves only the texel's own
+// depth to compare with, a self-comparison at a grazing floor's far edge read 0.016 darker
+// in standard depth than in reversed-infinite (where the floor goes on past the far plane).
 float ao_ssao_self_weight(vec2 pos, ivec2 p)
 {
     vec2 off = abs(pos - (vec2(p) + 0.5));

@@ -163,13 +163,14 @@ void check_open_floor(const std::string& name, int rows_left_out = 0, float hori
 TEST_CASE("accuracy: ssao at default settings, against the truth on the closed-form scenes")
 {
     // SSAO's defaults (seed 000's strength and radius) read a sixth of the true occlusion:
-    // issue 23's defect, stated here so that it moves only on purpose.
+    // issue 23's defect, stated here so that it moves only on purpose. Re-measured
+    // 2026-12-04 with smooth decisions: each ratio within 10 % of the steps'.
     check_against_truth({{"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "ssao-s16-half-bilateral-gbufworld-std-persp-fs"},
-                         {{"crease", {0.102, 0.144}}, {"groove", {0.079, 0.098}}, {"sphere_on_plane", {0.068, 0.110}}, {"plank", {0.062, 0.264}}, {"wall", {0.110, 0.163}}}});
+                         {{"crease", {0.102, 0.143}}, {"groove", {0.079, 0.098}}, {"sphere_on_plane", {0.068, 0.101}}, {"plank", {0.062, 0.223}}, {"wall", {0.110, 0.163}}}});
     check_against_truth({{"ssao-s16-full-noblur-gbufworld-std-persp-cs", "ssao-s16-full-noblur-gbufworld-std-persp-cs-mip5"}, // the AO pass alone
-                         {{"crease", {0.098, 0.178}}, {"groove", {0.077, 0.135}}, {"sphere_on_plane", {0.067, 0.102}}, {"plank", {0.057, 0.242}}, {"wall", {0.110, 0.166}}}});
+                         {{"crease", {0.098, 0.177}}, {"groove", {0.077, 0.135}}, {"sphere_on_plane", {0.067, 0.101}}, {"plank", {0.057, 0.218}}, {"wall", {0.110, 0.165}}}});
     check_against_truth({{"ssao-s16-half-bilateral-recon-std-persp-cs"}, // normals reconstructed from depth
-                         {{"crease", {0.102, 0.146}}, {"groove", {0.068, 0.211}}, {"sphere_on_plane", {0.068, 0.110}}, {"plank", {0.058, 0.456}}, {"wall", {0.110, 0.163}}}});
+                         {{"crease", {0.102, 0.145}}, {"groove", {0.068, 0.205}}, {"sphere_on_plane", {0.068, 0.101}}, {"plank", {0.058, 0.426}}, {"wall", {0.110, 0.162}}}});
 }
 
 TEST_CASE("accuracy: gtao at default settings, against the truth on the closed-form scenes")
@@ -211,9 +212,35 @@ TEST_CASE("accuracy: ssao reads the floor to the horizon as open but for its fir
 {
     // A finding of this test: at 160 × 90 SSAO darkens the floor's first row (2 km away,
     // one row spanning hundreds of metres) to 238/255 — its samples land on the silhouette
-    // row's texel centres, which lie above the plane under them. Issue 23 (every SSAO
-    // decision continuous) is where it is fixed; until then the row is held where it is.
+    // row's texel centres, which lie above the plane under them. With smooth decisions
+    // (2026-12-04) the row reads 227/255, the steps' 238/255 (which band darkens it is not
+    // yet measured). Held there until issue 23's
+    // tuned defaults re-measure it.
     for (const char* v : {"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "ssao-s16-full-noblur-gbufworld-std-persp-cs",
                           "ssao-s16-half-bilateral-recon-std-persp-cs", "ssao-s16-full-noblur-gbufworld-std-persp-cs-mip5"})
-        check_open_floor(v, 1, 236.0f / 255.0f);
+        check_open_floor(v, 1, 226.0f / 255.0f);
+}
+
+TEST_CASE("accuracy: ssao's smooth decisions occlude as much as the seeds' steps, scene by scene")
+{
+    // A smooth decision changes where a vote jumps, not how much the votes add up to: its band
+    // is centred on the step's threshold. A band that starts at the threshold instead shifts
+    // it by half its width, and the Crytek kernel gathers its samples near the pixel, where
+    // many lie that close to it: such bands read the plank's occlusion a third as strong as
+    // the steps (tests/mutants: ssao_vote_band_one_sided). Measured 2026-12-04 on lavapipe:
+    // the smooth variant's occlusion over the steps' 0.90 (plank: the own-texel band, which
+    // starts at the texel's edge, params.hpp's ssao_bands) to 1.00 on these scenes.
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const std::string smooth = "ssao-s16-full-noblur-gbufworld-std-persp-cs";
+    for (const char* scene : {"crease", "groove", "sphere_on_plane", "plank", "wall"}) {
+        const truth_scene& t = truth_of(scene);
+        const double ratio_smooth = occlusion_ratio(ao_of(*ctx, variant_from_name(smooth), t), t.truth);
+        const double ratio_step = occlusion_ratio(ao_of(*ctx, variant_from_name(smooth + "-step"), t), t.truth);
+        std::cout << "ssao smooth against step on " << scene << ": occlusion " << ratio_smooth / ratio_step << " of the steps'\n";
+        INFO(scene << ": smooth occlusion ratio " << ratio_smooth << ", step " << ratio_step);
+        CHECK(ratio_smooth / ratio_step >= 0.85);
+        CHECK(ratio_smooth / ratio_step <= 1.2);
+    }
+    require_clean(*ctx);
 }

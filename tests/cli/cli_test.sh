@@ -126,7 +126,7 @@ list)
   "$aogen" list --variants >"$work/variants.txt"
   check "the default matrix has 101 variants" test "$(wc -l <"$work/variants.txt")" -eq 101
   check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 101
-  check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004" "$work/variants.txt"
+  check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004-step" "$work/variants.txt"
   check "VBAO's High preset is in it, at half and full resolution" grep -qx "vbao-3x3-full-bilateral-gbufworld-std-persp-cs" "$work/variants.txt"
   check "axes list vbao" grep -q "ssao | gtao | vbao" "$work/axes.txt"
   ;;

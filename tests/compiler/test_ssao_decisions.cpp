@@ -182,10 +182,13 @@ TEST_CASE("ssao decisions: each weight goes from one outcome to the other across
     CHECK(w[0].front() == 1.0f); // the sample far behind the scene point: occluded
     CHECK(w[0].back() == 0.0f);
     CHECK(std::is_sorted(w[0].rbegin(), w[0].rend()));
-    // The own texel: 0 inside it (x < 11), 1 from a band past its edge on.
+    // The own texel (band an eighth of a pixel past the texel's edge at x = 11): 0 up to
+    // x = 11, 1 from x = 11.125 on.
     CHECK(w[1].front() == 0.0f);
-    CHECK(w[1][6] == 0.0f); // x = 10.96875: still in its own texel
-    CHECK(w[1][8] > 0.0f);  // x = 11.125: past the edge, inside the band
+    CHECK(w[1][6] == 0.0f);  // x = 10.96875: inside its own texel
+    CHECK(w[1][7] > 0.0f);   // x = 11.046875: past the edge, inside the band
+    CHECK(w[1][7] < 0.5f);
+    CHECK(w[1][8] == 1.0f);  // x = 11.125: the band's end
     CHECK(w[1].back() == 1.0f);
     CHECK(std::is_sorted(w[1].begin(), w[1].end()));
     // The screen: 0 off it, 1 a band inside.
