@@ -238,15 +238,16 @@ float ao_ssao_hemisphere(ivec2 target_pixel, ivec2 p, float depth)
         float counts = ao_ssao_self_weight(pos, p);
         if (!(counts > 0.0)) continue; // its own texel: judged open
         // The two readings of the scene's depth where S projects, mixed by how far the
-        // texels around it lie on one plane (depth.glsl's ao_depth_readings).
-        float texel_depth, plane_depth, plane_weight;
+        // texels around it lie on one plane (depth.glsl's ao_depth_readings), counted as far
+        // as a surface is sure to be under it.
+        float texel_depth, plane_depth, plane_weight, surface;
         vec2 texel_at;
         int level = ao_tap_level(length(pos - (vec2(p) + 0.5))); // its depth MIP level (0 without a chain)
-        if (!ao_depth_readings(pos, level, texel_depth, texel_at, plane_depth, plane_weight)) continue; // background: judged open
+        if (!ao_depth_readings(pos, level, texel_depth, texel_at, plane_depth, plane_weight, surface)) continue; // background: judged open
         float occ = 0.0;
         if (plane_weight < 1.0) occ = ao_ssao_occlusion(P.z, S.z, ao_view_z(texel_at / fsize, texel_depth), radius, bias);
         if (plane_weight > 0.0) occ = ao_lerp(occ, ao_ssao_occlusion(P.z, S.z, ao_view_z(pos / fsize, plane_depth), radius, bias), plane_weight);
-        occlusion += on_screen * counts * occ;
+        occlusion += on_screen * counts * surface * occ;
 #else
         // Off screen (a NaN fails every comparison and is skipped too).
         if (!(uv.x >= 0.0 && uv.y >= 0.0 && uv.x < 1.0 && uv.y < 1.0)) continue;

@@ -80,10 +80,26 @@ inline std::string field(std::string_view prefix, std::string_view name)
 // to the camera than the sample by more than `bias`. Each vote is weighted by the range
 // check, summed to `occlusion`, and turned into the output. N, the range check and the
 // output form are the variant's (variant::ssao_samples, range_check, output).
+//
+// The defaults of strength and radius_per_ao_radius are tuned: the values with the lowest
+// mean RMSE against ray-traced AO over eight SSAO variants of the default matrix (8 to 64
+// samples, half and full resolution, bilateral, box and no blur) on the ten built-in scenes
+// with normals, found by `aogen_tune --joint` (a narrowing grid, 75 settings) and checked on
+// six mesh scenes the search did not see: 41 % lower error on the training scenes (0.104 ->
+// 0.061) and 15 % on the unseen ones (0.038 -> 0.033) than the seeds' radius R and strength
+// 1 (BENCHMARKS.md, 2026-12-04). They hold on every depth convention because every
+// per-sample decision is a smooth weight (ssao_bands below): a strength of 3.3 multiplies
+// each vote, and with the seeds' steps one vote flipping at the bias moved a pixel by 0.2.
+// The seeds' values stay in presets::taos_ssao() and the other SSAO presets.
 struct ssao_params {
     // Hemisphere radius in view-space units; also the range check's scale.
-    // 0.5 is Unique Engine's default (and ours for Taos SSAO and ssao.wgsl).
+    // 0.5 is Unique Engine's default (and ours for Taos SSAO and ssao.wgsl). To match
+    // ambient occlusion of radius R (a ray-traced reference's), use radius_per_ao_radius · R
+    // (and keep the bias at the same share of it): the Crytek kernel gathers its samples
+    // near the origin (0.1 + 0.9·(i/N)² of the radius), so a hemisphere of radius R sees
+    // mostly the first half of it (tuned).
     static constexpr float_range radius_range{0.0f, max_world_length, true};
+    static constexpr float radius_per_ao_radius = 2.03125f;
     float radius = 0.5f;
 
     // Depth-comparison bias in view-space units: occluded when
@@ -92,12 +108,11 @@ struct ssao_params {
     float bias = 0.025f;
 
     // The variant's output ssao_output::strength: out = clamp(1 − occlusion/N · strength, 0, 1).
-    // 0 = no AO, 1 = the plain average, > 1 darkens (saturates sooner). Not tuned yet:
-    // the search's best (3.3 at a radius of 2 R) multiplies every sample's vote, and a
-    // single vote flipping at the bias threshold then moves a pixel by 0.2 -- the
-    // stability suite's depth_conventions case fails with it (BENCHMARKS.md, 2026-12-01).
+    // 0 = no AO, 1 = the plain average (the seeds'), > 1 darkens (saturates sooner). Tuned:
+    // 3.3125 with the radius above (the seeds' 1 reads a sixth of the true occlusion on the
+    // closed-form scenes: votes are counted over a volume, true AO over directions).
     static constexpr float_range strength_range{0.0f, 100.0f, false};
-    float strength = 1.0f;
+    float strength = 3.3125f;
 
     // Output ssao_output::power_intensity: ao = pow(1 − occlusion/N, power). Must be > 0 (GLSL's
     // pow(0, y) is undefined for y <= 0). Unique Engine default 1.0.

@@ -191,6 +191,30 @@ vec4 ao_mip_quad(ivec2 i0, int level)
 }
 #endif
 
+// Screen position `pos` (full-resolution pixels) in level `level`'s texels, measured from the
+// first texel's centre: its floor is the first of the four texels whose centres surround pos,
+// its fraction pos's place between their centres.
+vec2 ao_depth_quad_coords(vec2 pos, int level)
+{
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    return pos * ao_exp2i(-level) - 0.5; // exact: a power of two
+#else
+    return pos - 0.5;
+#endif
+}
+
+// The depths of level `level`'s texels i0 .. i0 + 1 (ao_depth_quad at level 0, ao_mip_quad
+// above it), clamped to the level, in textureGather's order.
+vec4 ao_depth_quad_at(ivec2 i0, int level)
+{
+#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
+    if (level == 0) return ao_depth_quad(i0); // a branch, not a select: one of the two reads per tap
+    return ao_mip_quad(i0, level);
+#else
+    return ao_depth_quad(i0);
+#endif
+}
+
 // The four texels of level `level` whose centres surround screen position `pos` (full-
 // resolution pixels), in textureGather's order; `f`, pos's place between their centres; and
 // pos's own texel among them (the one whose centre is within half a texel): its depth, its
@@ -201,20 +225,13 @@ vec4 ao_depth_around(vec2 pos, int level, out vec2 f, out float own_depth, out v
 #if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
     float texel = ao_exp2i(level); // a level-`level` texel's side in pixels
     ivec2 level_size = level == 0 ? size : ao_mip_size(level);
-    vec2 t = pos * ao_exp2i(-level) - 0.5; // exact: a power of two
 #else
     ivec2 level_size = size;
-    vec2 t = pos - 0.5;
 #endif
+    vec2 t = ao_depth_quad_coords(pos, level);
     ivec2 i0 = ivec2(floor(t));
     f = t - floor(t);
-#if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO)
-    vec4 g;
-    if (level == 0) g = ao_depth_quad(i0); // a branch, not a select: one of the two reads per tap
-    else g = ao_mip_quad(i0, level);
-#else
-    vec4 g = ao_depth_quad(i0);
-#endif
+    vec4 g = ao_depth_quad_at(i0, level);
     float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
     ivec2 own = clamp(i0 + ivec2(greaterThanEqual(f, vec2(0.5))), ivec2(0), level_size - 1);
     own_depth = f.y >= 0.5 ? (f.x >= 0.5 ? d11 : d01) : (f.x >= 0.5 ? d10 : d00);
@@ -284,20 +301,54 @@ float ao_depth_plane_weight(vec4 g)
 // ao_depth_at's two readings of the surface under `pos`, for a caller that blends them
 // rather than switching between them (ssao.glsl's smooth decisions): the texel reading,
 // pos's own texel's depth `texel_depth` at its centre `texel_at`; the plane reading, the
-// bilinear depth `plane_depth` under pos itself; and `plane_weight`, how far to trust the
-// plane reading (ao_depth_plane_weight; 0 beside background, where only the texel is a
-// surface). False when pos's own texel is background.
-bool ao_depth_readings(vec2 pos, int level, out float texel_depth, out vec2 texel_at, out float plane_depth, out float plane_weight)
+// depth `plane_depth` of the plane under pos itself; `plane_weight`, how far to trust the
+// plane reading (ao_depth_plane_weight; 0 where it cannot be made); and `surface`, how surely
+// a surface is under pos at all. False when pos's own texel is background.
+//
+// Between four surface texels the plane is their bilinear mix (ao_depth_at says why it is
+// exact), and surface is 1. Beside background -- a floor's last row under the sky, an object's
+// outline -- the plane is extended from the side away from the background: the two texels
+// along it and the two behind them, mixed linearly past their centres (exact for a plane as
+// the mix is). Without it only the texel reading is left, the last row's centre depth, which
+// lies in front of every sample above the row beside the pixel: a floor whose truth is 1
+// read 175/255 along its far edge, and a floor cut by the far plane (standard depth) read up
+// to 0.5 darker along the cut than the same floor running on (reversed-infinite depth).
+// Where the surface ends between the last centre and the background is unknown: surface
+// falls from 1 at the texel's centre to 0 at its edge toward the background, where the
+// sample meets background and counts as open.
+bool ao_depth_readings(vec2 pos, int level, out float texel_depth, out vec2 texel_at, out float plane_depth, out float plane_weight,
+                       out float surface)
 {
     vec2 f;
     ivec2 nearest;
     vec4 g = ao_depth_around(pos, level, f, texel_depth, texel_at, nearest);
     plane_depth = texel_depth;
     plane_weight = 0.0;
+    surface = 0.0;
     if (ao_is_background(texel_depth)) return false;
-    if (ao_is_background(g.x) || ao_is_background(g.y) || ao_is_background(g.z) || ao_is_background(g.w)) return true;
-    plane_weight = ao_depth_plane_weight(g);
-    if (plane_weight > 0.0) plane_depth = ao_depth_bilinear(g, f);
+    bvec4 gap = bvec4(ao_is_background(g.x), ao_is_background(g.y), ao_is_background(g.z), ao_is_background(g.w));
+    if (!any(gap)) {
+        surface = 1.0;
+        plane_weight = ao_depth_plane_weight(g);
+        if (plane_weight > 0.0) plane_depth = ao_depth_bilinear(g, f);
+        return true;
+    }
+    // The bilinear share of the four that is surface: 1 at the own texel's centre, 1/2 at its
+    // edge toward a background texel; doubled past 1/2 to reach 0 at that edge.
+    vec4 bilinear = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+    surface = clamp(2.0 * dot(vec4(not(gap)), bilinear) - 1.0, 0.0, 1.0);
+    // A row or column of the four that is all surface, and the quad one texel beyond it
+    // (g's order: x = (i0, j1), y = (i1, j1), z = (i1, j0), w = (i0, j0)).
+    ivec2 step;
+    if (!gap.w && !gap.z) step = ivec2(0, -1);      // row j0: extended from rows j0 - 1, j0
+    else if (!gap.x && !gap.y) step = ivec2(0, 1);  // row j1: from j1, j1 + 1
+    else if (!gap.w && !gap.x) step = ivec2(-1, 0); // column i0
+    else if (!gap.z && !gap.y) step = ivec2(1, 0);  // column i1
+    else return true;                                 // one texel of surface: its centre only
+    vec4 h = ao_depth_quad_at(ivec2(floor(ao_depth_quad_coords(pos, level))) + step, level);
+    if (ao_is_background(h.x) || ao_is_background(h.y) || ao_is_background(h.z) || ao_is_background(h.w)) return true;
+    plane_weight = ao_depth_plane_weight(h);
+    if (plane_weight > 0.0) plane_depth = ao_depth_bilinear(h, f - vec2(step)); // past h's centres, along `step`
     return true;
 }
 #endif

@@ -48,19 +48,20 @@ inline std::string cannot_run(const aogen::variant& v, const aogen::scenes::scen
 }
 
 // The AO radii R for which every setting default_settings derives from R lies in its
-// parameter's range (params.hpp): the SSAO and GTAO radius R itself, SSAO's bias (a fixed
-// fraction of R) and the linear blur's sharpness (10 per unit at R = 1, so 10 / R).
+// parameter's range (params.hpp): the SSAO, GTAO and VBAO radii (each a multiple of R),
+// SSAO's bias (a fixed fraction of its radius) and the linear blur's sharpness (10 per unit at R = 1, so 10 / R).
 struct radius_range {
     double lo, hi;
 };
 inline radius_range ao_radius_range()
 {
     const double sharpness = aogen::blur_params{}.linear_sharpness;          // at R = 1
-    const aogen::ssao_params taos = aogen::presets::taos_ssao().settings.ssao;
-    const double bias_ratio = taos.bias / taos.radius;
-    double hi = std::min(double(aogen::ssao_params::radius_range.hi),
-                         aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
-    hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / bias_ratio);
+    const aogen::ssao_params ssao{};
+    const double ssao_scale = aogen::ssao_params::radius_per_ao_radius; // > 1, the larger of the two outputs'
+    const double bias_ratio = ssao.bias / ssao.radius;
+    double hi = double(aogen::ssao_params::radius_range.hi) / ssao_scale;
+    hi = std::min(hi, aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
+    hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / (bias_ratio * ssao_scale));
     hi = std::min(hi, aogen::vbao_params::radius_range.hi / double(aogen::vbao_params::radius_per_ao_radius));
     return {sharpness / double(aogen::blur_params::linear_sharpness_range.hi), hi};
 }
@@ -78,11 +79,16 @@ inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, c
 {
     const float R = float(s.ao_radius);
     aogen::vulkan::chain_settings c;
-    const aogen::preset ssao = v.output == aogen::ssao_output::power_intensity ? aogen::presets::unique_engine_ssao()
-                                                                              : aogen::presets::taos_ssao();
-    c.ssao = ssao.settings.ssao;
-    c.ssao.bias = c.ssao.bias / c.ssao.radius * R;
-    c.ssao.radius = R;
+    // SSAO takes the tuned defaults (params.hpp), which need the smooth decisions; the seeds'
+    // step decisions and the power/intensity output (which the tuner does not search) run the
+    // seeds' values at the radius R.
+    const bool seed_ssao = v.output == aogen::ssao_output::power_intensity || v.decisions == aogen::ssao_decisions::step;
+    c.ssao = !seed_ssao ? aogen::ssao_params{}
+             : v.output == aogen::ssao_output::power_intensity ? aogen::presets::unique_engine_ssao().settings.ssao
+                                                               : aogen::presets::taos_ssao().settings.ssao;
+    const float ssao_radius = seed_ssao ? R : aogen::ssao_params::radius_per_ao_radius * R;
+    c.ssao.bias = c.ssao.bias / c.ssao.radius * ssao_radius;
+    c.ssao.radius = ssao_radius;
     c.gtao = aogen::gtao_params{}; // the tuned defaults (params.hpp)
     c.gtao.radius = aogen::gtao_params::radius_per_ao_radius * R;
     c.vbao = aogen::vbao_params{};

@@ -78,13 +78,13 @@ inline std::vector<tune_axis> technique_axes(const aogen::variant& v)
     if (v.output == aogen::ssao_output::power_intensity)
         aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, VBAO, or SSAO with the strength output");
     return {
-        {{"radius_scale", 0.5, 4.0}, [] { return 1.0; },
+        {{"radius_scale", 0.5, 4.0}, [] { return double(aogen::ssao_params::radius_per_ao_radius); },
          [](settings& c, float R, double x) {
              const float radius = float(x) * R;
              c.ssao.bias *= radius / c.ssao.radius;
              c.ssao.radius = radius;
          }},
-        {{"strength", 0.5, 8.0}, [] { return double(aogen::presets::taos_ssao().settings.ssao.strength); },
+        {{"strength", 0.5, 8.0}, [] { return double(aogen::ssao_params{}.strength); },
          [](settings& c, float, double x) { c.ssao.strength = float(x); }},
     };
 }
