@@ -135,6 +135,7 @@ inline preset unique_engine_ssao()
     p.settings.ssao.bias = 0.025f;
     p.settings.ssao.power = 1.0f;
     p.settings.ssao.intensity = 1.0f;
+    p.settings.ssao.strength = 1.0f;  // not read by its output form; the seeds' 1, so its block's bytes stay
     p.settings.ssao.kernel = "crytek";                   // ours
     p.settings.ssao.noise_size = 4;                      // ours
     p.settings.blur.linear_sharpness = 10.0f;            // ours
