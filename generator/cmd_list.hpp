@@ -33,8 +33,8 @@ struct list_command {
             std::string axis, values, in_name;
         };
         const std::vector<row> rows{
-            {"technique", names::list(technique_names), "ssao | gtao | vbao"},
-            {"ssao samples", "1..256 (matrix 8, 16, 32, 64; default 16)", "s<N>"},
+            {"technique", names::list(technique_names), "ssao | gtao | vbao | sao"},
+            {"ssao samples, sao taps", "1..256 (matrix: ssao 8, 16, 32, 64, sao 8, 16, 32; default 16)", "s<N>"},
             {"gtao, vbao slices x steps", "1..16 x 1..16 (default 2 x 3)", "<slices>x<steps>"},
             {"resolution", "half, full", "half | full"},
             {"blur", names::list(blur_mode_names), "bilateral | box | noblur"},
@@ -46,7 +46,7 @@ struct list_command {
             {"point-cloud fallback", "off, on (ssao only)", "-pc"},
             {"range check", names::list(ssao_range_check_names) + " (ssao only)", "-rc004 for seed004"},
             {"output", names::list(ssao_output_names) + " (ssao only)", "-powint"},
-            {"precision", "fp32, fp16 (16-bit AO-pass arithmetic; spv, hlsl, msl targets)", "-fp16"},
+            {"precision", "fp32, fp16 (16-bit AO-pass arithmetic, not sao; spv, hlsl, msl targets)", "-fp16"},
             {"workgroup", "1..32 x 1..32, at most 1024 (compute; default 8x8)", "-wg<X>x<Y>"},
         };
         size_t axis_width = 4, values_width = 6;

@@ -19,8 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 
-MARKERS = {"ssao": "o", "gtao": "^", "vbao": "s"}
-COLOURS = {"ssao": "#1f77b4", "gtao": "#d62728", "vbao": "#2ca02c"}
+MARKERS = {"ssao": "o", "gtao": "^", "vbao": "s", "sao": "D"}
+COLOURS = {"ssao": "#1f77b4", "gtao": "#d62728", "vbao": "#2ca02c", "sao": "#9467bd"}
 
 
 def short(name):

@@ -162,9 +162,7 @@ float ao_ssao_occlusion(float pixel_z, float sample_z, float scene_z, float radi
 // and for a NaN position.
 float ao_ssao_screen_weight(vec2 pos, vec2 fsize)
 {
-    vec2 inside = min(pos, fsize - pos);
-    float d = min(inside.x, inside.y);
-    return d > 0.0 ? min(d / AO_SSAO_EDGE_BAND_PIXELS, 1.0) : 0.0;
+    return ao_screen_edge_weight(pos, fsize, AO_SSAO_EDGE_BAND_PIXELS);
 }
 
 // How much a sample at `pos` counts against pixel `p`'s surface: 0 anywhere in p's own texel

@@ -6,7 +6,8 @@
 //   command line and JSON through names.hpp; the readers also accept '-' for '_'
 //   ("gbuffer-world", as DESIGN.md spells the axis values):
 //
-//     technique          ssao, gtao, vbao; has_slices(t): GTAO and VBAO count slices × steps
+//     technique          ssao, gtao, vbao, sao; has_slices(t): GTAO and VBAO count slices ×
+//                        steps; has_samples(t): SSAO and SAO count samples
 //     pipeline_stage     compute or fragment; stage_of(s): the shader stage it compiles to
 //     projection_kind    perspective or orthographic
 //     depth_convention   standard, reversed, reversed_infinite (declared in math.hpp, whose
@@ -41,17 +42,23 @@
 
 namespace aogen {
 
-enum class technique { ssao, gtao, vbao };
-inline constexpr std::array<enum_name<technique>, 3> technique_names{{
+enum class technique { ssao, gtao, vbao, sao };
+inline constexpr std::array<enum_name<technique>, 4> technique_names{{
     {technique::ssao, "ssao"},
     {technique::gtao, "gtao"},
     {technique::vbao, "vbao"}, // visibility bitmask (Therrien et al. 2023)
+    {technique::sao, "sao"},   // scalable ambient obscurance (McGuire, Mara, Luebke 2012)
 }};
 
 // Whether technique `t` works in slices and steps per side (GTAO's horizons, VBAO's
 // bitmasks); SSAO counts kernel samples instead. The two share variant::gtao_slices and
 // variant::gtao_steps, their name token <S>x<N> and quality.hpp's presets.
 inline constexpr bool has_slices(technique t) { return t == technique::gtao || t == technique::vbao; }
+
+// Whether technique `t` takes a number of samples per pixel: SSAO's kernel samples, SAO's
+// spiral taps. The two share variant::ssao_samples and its name token s<N> (the SSAO family:
+// two estimators of the same screen-space obscurance, hemisphere votes and the Alchemy sum).
+inline constexpr bool has_samples(technique t) { return t == technique::ssao || t == technique::sao; }
 
 enum class pipeline_stage { compute, fragment };
 inline constexpr std::array<enum_name<pipeline_stage>, 2> pipeline_stage_names{{

@@ -9,7 +9,7 @@
 //                     the camera
 //     inputs_for(v, settings, target_w, target_h)
 //                     the std140 uniform block of each pass of `v`, the noise tile the
-//                     params name (4 × 4 for GTAO and VBAO) and, for SSAO, its kernel
+//                     params name (4 × 4 for GTAO, VBAO and SAO) and, for SSAO, its kernel
 //     target_size     the AO target: the G-buffer's size, or half of it rounded up
 //     output_size     what the chain returns: the screen when it ends with the upsample
 //
@@ -81,19 +81,21 @@ inline int output_scale(const variant& v)
 
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
 // target_w × target_h: each pass's std140 uniform block, the noise tile the params name
-// (4×4 for GTAO and VBAO) and, for SSAO, the kernel inside its block.
+// (4×4 for GTAO, VBAO and SAO) and, for SSAO, the kernel inside its block (SAO's spiral
+// is inside its own).
 inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
 {
     constexpr layout::rules rules = layout::rules::std140;
     const ssao_params& ssao = s.ssao;
     chain_inputs in;
-    in.noise_size = has_slices(v.tech) ? 4 : ssao.noise_size;
+    in.noise_size = v.tech == technique::ssao ? ssao.noise_size : 4;
     in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
     const vec2 tsize{float(target_w), float(target_h)};
     for (pass_kind pass : passes(v)) {
         if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules));
         else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size));
         else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size));
+        else if (v.tech == technique::sao) in.uniforms.push_back(uniforms::pack_sao(s.sao, s.camera, v.ssao_samples, tsize, rules, in.noise_size));
         else {
             const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), v.ssao_samples, ssao.kernel_seed);
             in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules));

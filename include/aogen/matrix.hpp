@@ -14,8 +14,9 @@
 //     half-resolution variants end with the depth-aware upsample;
 //     the seeds' own configurations as fragment variants (presets.hpp: Taos SSAO, Taos
 //     GTAO, Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it;
-//     and VBAO at quality.hpp's four presets (1×2, 2×2, 3×3, 9×3), half resolution,
-//     bilateral blur, and High (3×3) at full resolution, compute.
+//     VBAO at quality.hpp's four presets (1×2, 2×2, 3×3, 9×3), half resolution,
+//     bilateral blur, and High (3×3) at full resolution, compute;
+//     and SAO 8/16/32 taps × blur bilateral/denoise × full/half, compute.
 //
 // USAGE
 //     aogen::variant_matrix m;                  // one value per axis: the default variant
@@ -77,7 +78,7 @@ inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40
 }
 
 // Every combination, technique-major, in the order the axes' values are listed.
-// Combinations that are invalid (a point-cloud fallback with GTAO) are skipped.
+// Combinations that are invalid (a point-cloud fallback with GTAO, fp16 with SAO) are skipped.
 inline std::vector<variant> expand(const variant_matrix& m)
 {
     std::vector<variant> out;
@@ -105,6 +106,7 @@ inline std::vector<variant> expand(const variant_matrix& m)
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
         v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up;
         if (pc && t != technique::ssao) continue;
+        if (fp16 && t == technique::sao) continue;
         validate(v);
         const variant c = canonical(v);
         if (seen.insert(to_name(c)).second) out.push_back(c);
@@ -154,7 +156,13 @@ inline std::vector<variant> default_matrix()
     std::vector<variant> out = expand(ssao);
     for (const variant& v : expand(gtao)) append_unique(out, v);
     for (const variant& v : seed_variants()) append_unique(out, v);
-    for (const variant& v : vbao_default_variants()) append_unique(out, v); // last: the others keep their order
+    for (const variant& v : vbao_default_variants()) append_unique(out, v);
+    variant_matrix sao; // last: the others keep their order
+    sao.techniques = {technique::sao};
+    sao.ssao_samples = {8, 16, 32};
+    sao.blur = {blur_mode::bilateral, blur_mode::denoise};
+    sao.half_resolution = {false, true};
+    for (const variant& v : expand(sao)) append_unique(out, v);
     return out;
 }
 

@@ -9,9 +9,10 @@
 //   ssao_params   hemisphere SSAO (Taos SSAOPass, Unique Engine UeSSAOPass, ssao.wgsl)
 //   gtao_params   ground-truth AO, slice/horizon based (Taos GTAOPass)
 //   vbao_params   visibility-bitmask AO: GTAO's slices with a 32-sector mask and a thickness
+//   sao_params    scalable ambient obscurance: the Alchemy estimator over spiral taps
 //   blur_params   the denoise pass after either: the bilateral blur's and the denoise
 //                 filter's weights and depth terms, and the depth-aware upsample's
-//   ao_settings   all four: what a chain of any variant reads (chain_inputs.hpp)
+//   ao_settings   all five: what a chain of any variant reads (chain_inputs.hpp)
 //
 // What a variant compiles in -- sample, slice and step counts, the blur, where normals
 // come from, half resolution, SSAO's output form and range check -- is not here: those
@@ -310,6 +311,49 @@ struct vbao_params {
 };
 
 // ---------------------------------------------------------------------------------
+// SAO
+// ---------------------------------------------------------------------------------
+//
+// Scalable ambient obscurance (McGuire, Mara, Luebke, HPG 2012; templates/sao.glsl): the
+// Alchemy estimator (McGuire et al., HPG 2011) over N taps on a spiral in screen space
+// (spiral.hpp), each reading the depth buffer -- or a level of the depth MIP chain, far taps a
+// coarser one (variant::depth_mips) -- for the surface point Q there. With v = (Q − P) / radius
+// (P the pixel's view-space position, n its normal) each tap adds
+//     f(v) · max(0, v·n − bias) / (v·v + epsilon),   f(v) = max(0, 1 − v·v)³,
+// and out = clamp(1 − 2 · intensity · sum / N, 0, 1)^contrast. Every length is a share of the
+// radius -- the paper's sum has units of an inverse length and a bias in world units, ours is
+// dimensionless -- so the same settings serve a scene in micrometres and one in kilometres.
+// Nothing in it steps: the bias is a ramp, f falls to 0 at the radius, a tap off screen or on
+// background fades over a pixel as SSAO's smooth decisions do.
+//
+// The defaults of radius_per_ao_radius and intensity are tuned as GTAO's (BENCHMARKS.md).
+struct sao_params {
+    // World-space radius of the disc the taps cover (the view-plane disc through P,
+    // projected). To match ambient occlusion of radius R, use radius_per_ao_radius · R.
+    static constexpr float_range radius_range{0.0f, max_world_length, true};
+    static constexpr float radius_per_ao_radius = 1.0f; // not tuned yet
+    float radius = 1.0f;
+
+    // The share of the radius a tap must rise above P's tangent plane (v·n) before it
+    // occludes: depth quantization and tessellation make flat surfaces slightly concave. The
+    // paper's bias is a depth-proportional length; ours the radius's share (ours: 0.02).
+    static constexpr float_range bias_range{0.0f, 1.0f, false};
+    float bias = 0.02f;
+
+    // The paper's sigma: how strongly the sum darkens. Not tuned yet: 1, the paper's default.
+    static constexpr float_range intensity_range{0.0f, 100.0f, false};
+    float intensity = 1.0f;
+
+    // The paper's k: the visibility raised to it (> 0; 1 leaves it linear).
+    static constexpr float_range contrast_range{0.0f, 100.0f, true};
+    float contrast = 1.0f;
+
+    // The paper's epsilon, as a share of the radius squared: keeps a tap at P itself finite.
+    // The paper's 0.01 (world units squared at a radius of about 1).
+    static constexpr float epsilon = 0.01f;
+};
+
+// ---------------------------------------------------------------------------------
 // Blur
 // ---------------------------------------------------------------------------------
 struct blur_params {
@@ -402,6 +446,16 @@ inline void validate(const vbao_params& p, std::string_view prefix = "vbao")
     require_in(field(prefix, "strength"), p.strength, P::strength_range);
 }
 
+inline void validate(const sao_params& p, std::string_view prefix = "sao")
+{
+    using detail::field;
+    using P = sao_params;
+    require_in(field(prefix, "radius"), p.radius, P::radius_range);
+    require_in(field(prefix, "bias"), p.bias, P::bias_range);
+    require_in(field(prefix, "intensity"), p.intensity, P::intensity_range);
+    require_in(field(prefix, "contrast"), p.contrast, P::contrast_range);
+}
+
 inline void validate(const blur_params& p, std::string_view prefix = "blur")
 {
     using detail::field;
@@ -420,6 +474,7 @@ struct ao_settings {
     ssao_params ssao;
     gtao_params gtao;
     vbao_params vbao;
+    sao_params sao;
     blur_params blur;
 };
 
@@ -428,6 +483,7 @@ inline void validate(const ao_settings& s)
     validate(s.ssao, "ssao");
     validate(s.gtao, "gtao");
     validate(s.vbao, "vbao");
+    validate(s.sao, "sao");
     validate(s.blur, "blur");
 }
 

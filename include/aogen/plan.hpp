@@ -186,6 +186,7 @@ inline layout::block_desc uniform_block_of(const variant& v, pass_kind pass)
     if (pass != pass_kind::ao) return uniforms::blur_block();
     if (v.tech == technique::gtao) return uniforms::gtao_block();
     if (v.tech == technique::vbao) return uniforms::vbao_block();
+    if (v.tech == technique::sao) return uniforms::sao_block(v.ssao_samples);
     return uniforms::ssao_block(v.ssao_samples); // the point-cloud fallback too
 }
 
@@ -229,6 +230,8 @@ inline std::vector<std::string> template_files_of(const variant& v, pass_kind pa
             files.insert(files.end(), {"common/slices.glsl", "gtao.glsl"});
         } else if (v.tech == technique::vbao) {
             files.insert(files.end(), {"common/slices.glsl", "vbao.glsl"});
+        } else if (v.tech == technique::sao) {
+            files.push_back("sao.glsl");
         } else {
             if (v.point_cloud_fallback) files.push_back("ssao_point_cloud.glsl");
             files.push_back("ssao.glsl");
@@ -269,6 +272,12 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
             c.push_back({"AO_PC_SAME_BAND", glsl_float(ssao_bands::point_cloud_same_per_tolerance)});
             c.push_back({"AO_PC_CAVITY_BAND", glsl_float(ssao_bands::point_cloud_cavity_per_threshold)});
         }
+    }
+    if (pass == pass_kind::ao && v.tech == technique::sao) {
+        // SAO's taps fade at the screen's border and at silhouettes over SSAO's smooth bands.
+        c.push_back({"AO_SAO_EDGE_BAND_PIXELS", glsl_float(ssao_bands::edge_pixels)});
+        c.push_back({"AO_DEPTH_PLANE_BAND", glsl_float(ssao_bands::plane_per_spread)});
+        c.push_back({"AO_SAO_EPSILON", glsl_float(sao_params::epsilon)});
     }
     if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
         c.push_back({"AO_PC_BACKGROUND_DEPTH", glsl_float(point_cloud::background_depth)});

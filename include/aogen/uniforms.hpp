@@ -14,6 +14,7 @@
 //   SsaoUniforms   hemisphere SSAO (seeds 000, 002, 003): camera, kernel[N], settings
 //   GtaoUniforms   GTAO (seed 001): camera and settings; slices and steps are compile-time
 //   VbaoUniforms   VBAO: camera, radius, thickness (world units), strength
+//   SaoUniforms    SAO: camera, settings, spiral[N] (spiral.hpp)
 //   BlurUniforms   the bilateral and box blur passes
 //   SsaoUniform    seed 004's block exactly (inv_proj, proj, radius, bias, _pad): 144 bytes
 #pragma once
@@ -23,6 +24,7 @@
 #include "layout_writer.hpp"
 #include "math.hpp"
 #include "params.hpp"
+#include "spiral.hpp"
 #include "variant.hpp"
 
 #include <cstdint>
@@ -69,6 +71,16 @@ inline layout::block_desc vbao_block()
 {
     layout::struct_desc s{"VbaoUniforms", camera_members()};
     for (const char* name : {"radius", "thickness", "strength"}) s.members.push_back({name, "float"});
+    return {s, {}};
+}
+
+// SAO's block: the camera, its settings, and its spiral of taps (spiral.hpp), N of them.
+inline layout::block_desc sao_block(int taps)
+{
+    require_in("sao block taps", taps, variant::ssao_samples_range);
+    layout::struct_desc s{"SaoUniforms", camera_members()};
+    for (const char* name : {"radius", "bias", "intensity", "contrast"}) s.members.push_back({name, "float"});
+    s.members.push_back({"spiral", "vec4", static_cast<uint32_t>(taps)});
     return {s, {}};
 }
 
@@ -122,6 +134,22 @@ inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, c
     w.set("power", p.power);
     w.set("intensity", p.intensity);
     w.set("kernel", kernel);
+    return w.bytes();
+}
+
+// SaoUniforms bytes for a spiral of `taps` (the variant's ssao_samples); SAO's noise is a
+// rotation per pixel, like GTAO's.
+inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int taps, vec2 target_size, layout::rules rules,
+                                     int noise_size = 4)
+{
+    validate(p);
+    layout::writer w(layout::compute(sao_block(taps), rules));
+    detail::set_camera(w, cam, target_size, noise_size);
+    w.set("radius", p.radius);
+    w.set("bias", p.bias);
+    w.set("intensity", p.intensity);
+    w.set("contrast", p.contrast);
+    w.set("spiral", spiral::taps(taps));
     return w.bytes();
 }
 

@@ -11,6 +11,7 @@
 //       ssao-s16-half-bilateral-gbufworld-std-persp-cs
 //       gtao-2x3-full-box-recon-rev-ortho-fs
 //       vbao-3x3-half-bilateral-gbufworld-std-persp-cs
+//       sao-s16-half-denoise-gbufworld-std-persp-cs
 //   The tokens, in order: technique (+ samples, or slices x steps), resolution, blur,
 //   normals, depth, projection, stage; then only the axes that differ from their
 //   default, each a token of its own: `rawdepth` (seed-exact bilateral depth term),
@@ -55,6 +56,7 @@ namespace aogen {
 struct variant {
     technique tech = technique::ssao;
     // SSAO's kernel samples per pixel, N. Taos: 16, Unique Engine: 32, ssao.wgsl: 64.
+    // SAO's spiral taps per pixel (has_samples: the same field and name token).
     static constexpr int_range ssao_samples_range{1, 256};
     int ssao_samples = 16;
     // GTAO's and VBAO's (has_slices) slice directions per pixel, rotated per pixel by noise,
@@ -82,7 +84,8 @@ struct variant {
     // 16-bit floats for the AO pass's arithmetic where its precision allows it (GTAO's
     // slice integration and horizon cosines, SSAO's tangent frame, sample offsets and
     // weights); depth reconstruction, screen positions and sums stay 32-bit. Needs the
-    // device's shaderFloat16 (VK_KHR_shader_float16_int8). DESIGN.md default: off.
+    // device's shaderFloat16 (VK_KHR_shader_float16_int8). DESIGN.md default: off. Not
+    // with SAO: its per-tap sum is a ratio of squared lengths that 16 bits cannot hold.
     bool fp16 = false;
     // How a half-resolution target reaches the screen (upsample_mode): by the depth-aware
     // upsample pass (the default; the chain's output is then screen-sized) or not at all.
@@ -156,7 +159,9 @@ inline void validate(const variant& v)
              "valid: e.g. wg8x8, wg16x8, wg16x16");
     if (v.point_cloud_fallback && v.tech != technique::ssao)
         fail("point-cloud fallback", std::string("is an SSAO feature (seed 004), not available with ") + names::name_of(technique_names, v.tech, "technique"),
-             "valid: off with gtao and vbao");
+             "valid: off with gtao, vbao and sao");
+    if (v.fp16 && v.tech == technique::sao)
+        fail("fp16", "is not available with sao (its taps' sum divides squared lengths, past 16-bit range)", "valid: off with sao");
 }
 
 // ---------------------------------------------------------------------------------
@@ -263,6 +268,8 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
             choice("OUTPUT", names::name_of(ssao_output_names, v.output, "output"));
             choice("SSAO_DECISIONS", names::name_of(ssao_decisions_names, v.decisions, "decisions"));
             if (v.point_cloud_fallback) d.push_back({"AO_POINT_CLOUD_FALLBACK", ""});
+        } else if (v.tech == technique::sao) {
+            count("AO_SAO_SAMPLES", v.ssao_samples);
         } else if (v.tech == technique::gtao) {
             count("AO_GTAO_SLICES", v.gtao_slices);
             count("AO_GTAO_STEPS", v.gtao_steps);
@@ -294,8 +301,9 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
 inline variant canonical(variant v)
 {
     const variant d;
+    if (!has_samples(v.tech)) v.ssao_samples = d.ssao_samples;
     if (v.tech != technique::ssao) {
-        v.ssao_samples = d.ssao_samples, v.range_check = d.range_check, v.output = d.output, v.decisions = d.decisions;
+        v.range_check = d.range_check, v.output = d.output, v.decisions = d.decisions;
         v.point_cloud_fallback = d.point_cloud_fallback;
     }
     if (!has_slices(v.tech)) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
@@ -366,7 +374,7 @@ inline std::string name_of(const variant& input)
     const variant v = canonical(input);
     const variant d;
     std::string name = names::name_of(technique_names, v.tech, "technique");
-    if (v.tech == technique::ssao) name += "-s" + std::to_string(v.ssao_samples);
+    if (has_samples(v.tech)) name += "-s" + std::to_string(v.ssao_samples);
     else name += "-" + std::to_string(v.gtao_slices) + "x" + std::to_string(v.gtao_steps);
     name += v.half_resolution ? "-half" : "-full";
     name += std::string("-") + names::name_of(detail::blur_tokens, v.blur, "blur");
@@ -404,11 +412,11 @@ inline variant variant_from_name(const std::string& name)
     const std::vector<std::string> t = detail::split(name, '-');
     if (t.size() < 8)
         fail(subject, "has " + std::to_string(t.size()) + " tokens, too few",
-             "valid: ssao-s<N>|gtao-<S>x<N>|vbao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
+             "valid: ssao-s<N>|sao-s<N>|gtao-<S>x<N>|vbao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
              "persp|ortho, cs|fs, then extras; aogen list");
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");
-    if (v.tech == technique::ssao) {
+    if (has_samples(v.tech)) {
         if (t[1].size() < 2 || t[1][0] != 's' || (v.ssao_samples = detail::parse_count(t[1], 1)) < 0)
             fail(subject, quote(t[1]) + " is not a sample count", "valid: s1..s256");
     } else {

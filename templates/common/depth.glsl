@@ -365,6 +365,17 @@ bool ao_depth_texel(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
     return !ao_is_background(depth);
 }
 
+// How much of a tap at screen position `pos` (full-resolution pixels) the screen shows, for
+// the passes whose taps fade at the border rather than stop there (ssao.glsl's smooth
+// decisions, sao.glsl): 1 inside, falling to 0 over the last `band` pixels before the border;
+// 0 past it and for a NaN position.
+float ao_screen_edge_weight(vec2 pos, vec2 fsize, float band)
+{
+    vec2 inside = min(pos, fsize - pos);
+    float d = min(inside.x, inside.y);
+    return d > 0.0 ? min(d / band, 1.0) : 0.0;
+}
+
 // The level a tap `offset` full-resolution pixels from the pixel reads: ao_mip_level with a
 // depth MIP chain, 0 (the depth buffer) without one.
 int ao_tap_level(float offset)

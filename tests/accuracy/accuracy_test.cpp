@@ -263,3 +263,21 @@ TEST_CASE("accuracy: ssao's smooth decisions occlude as much as the seeds' steps
     }
     require_clean(*ctx);
 }
+
+TEST_CASE("accuracy: sao at default settings, against the truth on the closed-form scenes")
+{
+    // SAO_BOUNDS
+    check_against_truth({{"sao-s16-half-bilateral-gbufworld-std-persp-cs", "sao-s16-half-bilateral-gbufworld-std-persp-fs"},
+                         {{"crease", {1.0, 1.0}}, {"groove", {1.0, 1.0}}, {"sphere_on_plane", {1.0, 1.0}}, {"plank", {1.0, 1.0}}, {"wall", {1.0, 1.0}}}});
+    check_against_truth({{"sao-s16-full-noblur-gbufworld-std-persp-cs"}, // the AO pass alone
+                         {{"crease", {1.0, 1.0}}, {"groove", {1.0, 1.0}}, {"sphere_on_plane", {1.0, 1.0}}, {"plank", {1.0, 1.0}}, {"wall", {1.0, 1.0}}}});
+    check_against_truth({{"sao-s16-half-denoise-recon-std-persp-cs"}, // normals reconstructed from depth, the denoise pass
+                         {{"crease", {1.0, 1.0}}, {"groove", {1.0, 1.0}}, {"sphere_on_plane", {1.0, 1.0}}, {"plank", {1.0, 1.0}}, {"wall", {1.0, 1.0}}}});
+}
+
+TEST_CASE("accuracy: sao reads the floor to the horizon as open, every pixel")
+{
+    for (const char* v : {"sao-s16-half-bilateral-gbufworld-std-persp-cs", "sao-s16-full-noblur-gbufworld-std-persp-cs",
+                          "sao-s16-half-denoise-recon-std-persp-cs", "sao-s16-full-noblur-gbufworld-std-persp-cs-mip5"})
+        check_open_floor(v);
+}

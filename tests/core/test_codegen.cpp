@@ -48,7 +48,11 @@ std::vector<variant> broad_set()
                              "ssao-s16-half-denoise-gbufworld-revinf-ortho-cs-mip2",
                              // the deinterleaved dispatch (compute only): each technique, one with a chain
                              "gtao-3x3-full-noblur-gbufworld-std-persp-cs-deint", "ssao-s16-half-bilateral-recon-rev-ortho-cs-deint",
-                             "vbao-2x3-half-denoise-gbufworld-std-persp-cs-mip3-deint-wg16x8"})
+                             "vbao-2x3-half-denoise-gbufworld-std-persp-cs-mip3-deint-wg16x8",
+                             // SAO (not a matrix axis here, to keep the set's size): both stages, every
+                             // normal source, depth convention and projection, one with a chain
+                             "sao-s16-half-bilateral-gbufworld-std-persp-cs", "sao-s1-full-noblur-recon-revinf-ortho-fs",
+                             "sao-s8-half-denoise-gbufview-rev-persp-cs-mip3-deint", "sao-s32-full-box-gbufworld-std-ortho-fs"})
         vs.push_back(variant_from_name(name));
     return vs;
 }
@@ -206,6 +210,13 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
     CHECK(s[0].glsl.find("#line 1 \"aogen:VbaoUniforms\"\n" + decl(uniforms::vbao_block())) != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"vbao.glsl\"") != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"gtao.glsl\"") == std::string::npos);
+    v.tech = technique::sao;
+    v.ssao_samples = 12;
+    s = codegen::generate(v);
+    CHECK(s[0].glsl.find("#line 1 \"aogen:SaoUniforms\"\n" + decl(uniforms::sao_block(12))) != std::string::npos);
+    CHECK(s[0].glsl.find("#line 1 \"sao.glsl\"") != std::string::npos);
+    CHECK(s[0].glsl.find("#line 1 \"ssao.glsl\"") == std::string::npos);
+    CHECK(s[0].glsl.find("#define AO_SAO_SAMPLES 12") != std::string::npos);
     v = variant{};
     v.point_cloud_fallback = true; // seed 004's variant still reads SsaoUniforms
     CHECK(codegen::uniform_block(v, pass_kind::ao).root.name == "SsaoUniforms");

@@ -153,6 +153,32 @@ TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, str
     CHECK_THROWS_WITH(uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140), Catch::Contains("vbao.thickness"));
 }
 
+TEST_CASE("SAO block: GTAO's camera, then radius, bias, intensity, contrast and the spiral", "[uniforms]")
+{
+    const layout::struct_layout l = layout::compute(uniforms::sao_block(4), rules::std140);
+    CHECK(l.size == 224 + 4 * 16);
+    CHECK(l.name == "SaoUniforms");
+    sao_params p;
+    p.radius = 2.0f, p.bias = 0.125f, p.intensity = 1.5f, p.contrast = 0.75f;
+    const std::vector<uint8_t> bytes = uniforms::pack_sao(p, {mat4{}, perspective(1, 1, 1, 3)}, 4, {960, 540}, rules::std140);
+    REQUIRE(bytes.size() == 288);
+    CHECK(float_at(bytes, 192) == 240.0f); // noise_scale: a 4×4 tile
+    CHECK(float_at(bytes, 208) == 2.0f);   // radius
+    CHECK(float_at(bytes, 212) == 0.125f); // bias, a share of the radius
+    CHECK(float_at(bytes, 216) == 1.5f);   // intensity
+    CHECK(float_at(bytes, 220) == 0.75f);  // contrast
+    const std::vector<vec4> spiral = spiral::taps(4);
+    for (size_t i = 0; i < 4; ++i) {
+        CHECK(float_at(bytes, 224 + 16 * i) == spiral[i].x);
+        CHECK(float_at(bytes, 224 + 16 * i + 4) == spiral[i].y);
+        CHECK(float_at(bytes, 224 + 16 * i + 8) == spiral[i].z);
+    }
+    p.contrast = 0;
+    CHECK_THROWS_WITH(uniforms::pack_sao(p, {mat4{}, perspective(1, 1, 1, 3)}, 4, {960, 540}, rules::std140), Catch::Contains("sao.contrast"));
+    CHECK_THROWS_WITH(uniforms::pack_sao(sao_params{}, {mat4{}, perspective(1, 1, 1, 3)}, 257, {960, 540}, rules::std140),
+                      Catch::Contains("sao block taps: 257 is out of range"));
+}
+
 TEST_CASE("Packing sizes the SSAO block by its kernel and rejects kernels out of range and invalid params", "[uniforms]")
 {
     const ssao_params ssao = presets::taos_ssao().settings.ssao;

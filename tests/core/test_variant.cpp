@@ -86,6 +86,38 @@ TEST_CASE("variant: vbao shares gtao's slice x step token, keeps its counts, and
     CHECK_THAT(error_of([] { variant_from_name("vbao-s16-half-bilateral-gbufworld-std-persp-cs"); }), Contains("is not slices x steps"));
 }
 
+TEST_CASE("variant: sao shares ssao's sample token, refuses fp16 and the point-cloud fallback, ignores ssao's own axes", "[variant]")
+{
+    const variant v = variant_from_name("sao-s12-full-denoise-recon-revinf-ortho-cs-mip3");
+    CHECK(v.tech == technique::sao);
+    CHECK(v.ssao_samples == 12);
+    CHECK(v.depth_mips == 3);
+    CHECK(to_name(variant_from_name(to_name(v))) == "sao-s12-full-denoise-recon-revinf-ortho-cs-mip3");
+    variant s = v;
+    s.tech = technique::ssao;
+    CHECK(s != v);
+    CHECK(to_name(s) == "ssao-s12-full-denoise-recon-revinf-ortho-cs-mip3");
+    // Its defines: SAO's tap count and technique, none of SSAO's.
+    std::set<std::string> names;
+    for (const define& d : defines(v, pass_kind::ao)) names.insert(d.name + "=" + d.value);
+    CHECK(names.count("AO_TECHNIQUE_SAO="));
+    CHECK(names.count("AO_SAO_SAMPLES=12"));
+    for (const std::string& n : names) CHECK((n.rfind("AO_SSAO", 0) != 0 && n.rfind("AO_RANGE_CHECK", 0) != 0 && n.rfind("AO_OUTPUT", 0) != 0));
+    // SSAO's range check, output and decisions, and the slice counts, are not SAO's.
+    variant a = v;
+    a.range_check = ssao_range_check::seed004, a.output = ssao_output::power_intensity, a.decisions = ssao_decisions::step, a.gtao_slices = 7;
+    CHECK(a == v);
+    variant b = v;
+    b.ssao_samples = 13;
+    CHECK(b != v);
+    CHECK_THAT(error_of([] { variant_from_name("sao-s0-half-bilateral-gbufworld-std-persp-cs"); }), Contains("ssao samples: 0 is out of range"));
+    CHECK_THAT(error_of([] { variant_from_name("sao-2x3-half-bilateral-gbufworld-std-persp-cs"); }), Contains("is not a sample count"));
+    CHECK_THAT(error_of([] { variant_from_name("sao-s16-half-bilateral-gbufworld-std-persp-cs-pc"); }), Contains("not available with sao"));
+    CHECK_THAT(error_of([] { variant_from_name("sao-s16-half-bilateral-gbufworld-std-persp-cs-fp16"); }),
+               Contains("fp16: is not available with sao") && Contains("valid: off with sao"));
+    CHECK_THAT(error_of([] { variant_from_name("sao-s16-half-bilateral-gbufworld-std-persp-cs-step"); }), Contains("is not in canonical form"));
+}
+
 TEST_CASE("variant: every name parses back into the same variant, and names are unique", "[variant]")
 {
     const std::vector<variant> all = broad_set();
@@ -235,25 +267,30 @@ TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and
 TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
 {
     const std::vector<variant> m = default_matrix();
-    CHECK(m.size() == 32 + 60 + 4 + 5);
-    int ssao_cs = 0, gtao_cs = 0, vbao_cs = 0, fs = 0;
+    CHECK(m.size() == 32 + 60 + 4 + 5 + 12);
+    int ssao_cs = 0, gtao_cs = 0, vbao_cs = 0, sao_cs = 0, fs = 0;
     for (const variant& v : m) {
         if (v.stage == pipeline_stage::fragment) ++fs;
         else if (v.tech == technique::ssao) ++ssao_cs;
         else if (v.tech == technique::gtao) ++gtao_cs;
-        else ++vbao_cs;
+        else if (v.tech == technique::vbao) ++vbao_cs;
+        else ++sao_cs;
     }
     CHECK(ssao_cs == 32); // 4 sample counts x 4 blurs x full/half
     CHECK(gtao_cs == 60); // 5 slice counts x 3 step counts x 4 blurs
     CHECK(vbao_cs == 5);
+    CHECK(sao_cs == 12); // 3 tap counts x bilateral/denoise x full/half
     CHECK(fs == 4);
     // VBAO last, so that the others keep their order: the quality presets, then High at full resolution.
     std::vector<std::string> vbao;
-    for (size_t i = 96; i < m.size(); ++i) vbao.push_back(to_name(m[i]));
+    for (size_t i = 96; i < 101; ++i) vbao.push_back(to_name(m[i]));
     CHECK(vbao == std::vector<std::string>{"vbao-1x2-half-bilateral-gbufworld-std-persp-cs", "vbao-2x2-half-bilateral-gbufworld-std-persp-cs",
                                            "vbao-3x3-half-bilateral-gbufworld-std-persp-cs", "vbao-9x3-half-bilateral-gbufworld-std-persp-cs",
                                            "vbao-3x3-full-bilateral-gbufworld-std-persp-cs"});
     CHECK(to_name(m.front()) == "ssao-s8-full-bilateral-gbufworld-std-persp-cs");
+    // SAO after VBAO.
+    CHECK(to_name(m[101]) == "sao-s8-full-bilateral-gbufworld-std-persp-cs");
+    CHECK(to_name(m.back()) == "sao-s32-half-denoise-gbufworld-std-persp-cs");
 }
 
 TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO and VBAO only, and named back", "[variant][quality]")

@@ -30,7 +30,7 @@ aogen_report::suite_data run_scale_case(const std::string& variant)
 TEST_CASE("stability: each technique gives the same AO, pixel by pixel, at 1e-6 ... 1e6 of the scene's size", "[suite]")
 {
     for (const char* name : {"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "gtao-2x2-half-denoise-gbufworld-std-persp-cs",
-                             "vbao-2x3-half-bilateral-gbufworld-std-persp-cs"}) {
+                             "vbao-2x3-half-bilateral-gbufworld-std-persp-cs", "sao-s16-half-denoise-gbufworld-std-persp-cs"}) {
         const aogen_report::suite_data d = run_scale_case(name);
         REQUIRE(d.cases.size() == 1);
         REQUIRE(d.cases[0].runs.size() == 1);

@@ -33,7 +33,8 @@ using namespace aogen;
 // of them are where a depth interpolated with GLSL's mix() came out one ulp apart on GL and
 // on Vulkan and flipped an SSAO vote (8/255) and a VBAO sector (4/255): common/core.glsl's
 // ao_lerp. Then fragment variants: the seeds' four (the default matrix's fragment variants)
-// and three with the upsample, the denoise and VBAO, drawn as fullscreen triangles.
+// and three with the upsample, the denoise and VBAO, drawn as fullscreen triangles. Last, SAO
+// in each stage.
 inline const char* const emitted_target_variants[] = {
     "ssao-s16-half-bilateral-gbufworld-std-persp-cs",
     "ssao-s8-full-box-recon-std-persp-cs",
@@ -51,7 +52,9 @@ inline const char* const emitted_target_variants[] = {
     "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004",
     "ssao-s16-half-bilateral-gbufworld-std-persp-fs",
     "gtao-2x3-half-denoise-gbufworld-std-persp-fs",
-    "vbao-2x2-full-box-recon-std-persp-fs"};
+    "vbao-2x2-full-box-recon-std-persp-fs",
+    "sao-s16-half-denoise-gbufworld-std-persp-cs",
+    "sao-s8-full-noblur-recon-std-persp-fs"};
 
 // One validated context for the whole run (lavapipe's start-up is not free). Without a
 // device, or without the validation layer, each test fails, or, with

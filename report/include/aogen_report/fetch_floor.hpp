@@ -60,8 +60,9 @@ inline std::string floor_replacement_file(const std::string& name, const std::st
 // The fetch floor's stand-in for aogen template `path`, or "" when it is kept.
 inline std::string fetch_floor_replacement(const std::string& path)
 {
-    const std::array<const char*, 10> replaced{"common/normals.glsl", "common/slices.glsl", "ssao.glsl",         "gtao.glsl",     "vbao.glsl",
-                                               "blur_bilateral.glsl", "blur_box.glsl",      "blur_denoise.glsl", "upsample.glsl", "prefilter.glsl"};
+    const std::array<const char*, 11> replaced{"common/normals.glsl", "common/slices.glsl", "ssao.glsl",         "gtao.glsl",     "vbao.glsl",
+                                               "sao.glsl",            "blur_bilateral.glsl", "blur_box.glsl",     "blur_denoise.glsl", "upsample.glsl",
+                                               "prefilter.glsl"};
     if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
     // VBAO fetches what GTAO fetches (the same slices and steps): floor/vbao.glsl renames the
     // counts, then floor/gtao.glsl's loop follows.
@@ -81,7 +82,8 @@ inline std::string bandwidth_floor_replacement(const std::string& path)
     static constexpr stand_in stand_ins[] = {
         {"common/normals.glsl", "bandwidth/normals.glsl"}, {"common/slices.glsl", "bandwidth/slices.glsl"},
         {"ssao.glsl", "bandwidth/ao.glsl"},                {"gtao.glsl", "bandwidth/ao.glsl"},
-        {"vbao.glsl", "bandwidth/ao.glsl"},                {"blur_bilateral.glsl", "bandwidth/blur.glsl"},
+        {"vbao.glsl", "bandwidth/ao.glsl"},                {"sao.glsl", "bandwidth/ao.glsl"},
+        {"blur_bilateral.glsl", "bandwidth/blur.glsl"},
         {"blur_box.glsl", "bandwidth/blur.glsl"},          {"blur_denoise.glsl", "bandwidth/blur.glsl"},
         {"upsample.glsl", "bandwidth/upsample.glsl"},
         {"prefilter.glsl", "prefilter.glsl"}, // reads its input once already: both floors are one kernel

@@ -48,7 +48,7 @@ inline std::string cannot_run(const aogen::variant& v, const aogen::scenes::scen
 }
 
 // The AO radii R for which every setting default_settings derives from R lies in its
-// parameter's range (params.hpp): the SSAO, GTAO and VBAO radii (each a multiple of R),
+// parameter's range (params.hpp): the SSAO, GTAO, VBAO and SAO radii (each a multiple of R),
 // SSAO's bias (a fixed fraction of its radius) and the linear blur's sharpness (10 per unit at R = 1, so 10 / R).
 struct radius_range {
     double lo, hi;
@@ -63,6 +63,7 @@ inline radius_range ao_radius_range()
     hi = std::min(hi, aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
     hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / (bias_ratio * ssao_scale));
     hi = std::min(hi, aogen::vbao_params::radius_range.hi / double(aogen::vbao_params::radius_per_ao_radius));
+    hi = std::min(hi, aogen::sao_params::radius_range.hi / double(aogen::sao_params::radius_per_ao_radius));
     return {sharpness / double(aogen::blur_params::linear_sharpness_range.hi), hi};
 }
 
@@ -93,6 +94,8 @@ inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, c
     c.gtao.radius = aogen::gtao_params::radius_per_ao_radius * R;
     c.vbao = aogen::vbao_params{};
     c.vbao.radius = aogen::vbao_params::radius_per_ao_radius * R;
+    c.sao = aogen::sao_params{}; // its bias is a share of the radius: nothing else scales
+    c.sao.radius = aogen::sao_params::radius_per_ao_radius * R;
     c.blur = v.blur_depth == aogen::bilateral_depth::seed_raw ? aogen::presets::taos_quality_blur() : aogen::blur_params{};
     c.blur.linear_sharpness = c.blur.linear_sharpness / R;
     const aogen::scenes::scene seen = for_variant(s, v);

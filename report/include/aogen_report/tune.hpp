@@ -49,6 +49,7 @@ struct tune_axis {
 //          falloff_range (the share of the cut-off distance a sample fades over),
 //          thin_occluder (how much longer depth offsets count);
 //   vbao   radius_scale, strength, thickness (each sample's depth, a fraction of the radius);
+//   sao    radius_scale, intensity (the Alchemy sum's sigma), bias (a share of the radius);
 //   ssao   radius_scale, strength (1 − occlusion·strength); the bias keeps its ratio to
 //          the radius, as the presets have it;
 // then, for every technique, blur_sharpness (tune_axes).
@@ -74,6 +75,14 @@ inline std::vector<tune_axis> technique_axes(const aogen::variant& v)
             {{"strength", 0.25, 3.0}, [] { return double(aogen::vbao_params{}.strength); }, [](settings& c, float, double x) { c.vbao.strength = float(x); }},
             {{"thickness", 0.05, 2.0}, [] { return double(aogen::vbao_params{}.thickness); },
              [](settings& c, float, double x) { c.vbao.thickness = float(x); }},
+        };
+    if (v.tech == aogen::technique::sao)
+        return {
+            {{"radius_scale", 0.5, 4.0}, [] { return double(aogen::sao_params::radius_per_ao_radius); },
+             [](settings& c, float R, double x) { c.sao.radius = float(x) * R; }},
+            {{"intensity", 0.25, 8.0}, [] { return double(aogen::sao_params{}.intensity); },
+             [](settings& c, float, double x) { c.sao.intensity = float(x); }},
+            {{"bias", 0.0, 0.2}, [] { return double(aogen::sao_params{}.bias); }, [](settings& c, float, double x) { c.sao.bias = float(x); }},
         };
     if (v.output == aogen::ssao_output::power_intensity)
         aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, VBAO, or SSAO with the strength output");

@@ -96,7 +96,10 @@ inline void require_axes_used(const json_reader& in, const std::vector<technique
 {
     const bool ssao = std::find(techniques.begin(), techniques.end(), technique::ssao) != techniques.end();
     const bool slices = std::any_of(techniques.begin(), techniques.end(), has_slices);
-    for (const char* key : {"samples", "point_cloud", "range_check", "output", "decisions"})
+    const bool samples = std::any_of(techniques.begin(), techniques.end(), has_samples);
+    if (in.has("samples") && !samples)
+        fail(key_path(in.path(), "samples"), "is an SSAO and SAO axis, and this matrix makes neither", "valid: leave it out, or add \"ssao\" or \"sao\" to technique");
+    for (const char* key : {"point_cloud", "range_check", "output", "decisions"})
         if (in.has(key) && !ssao)
             fail(key_path(in.path(), key), "is an SSAO axis, and this matrix makes no SSAO variant", "valid: leave it out, or add \"ssao\" to technique");
     for (const char* key : {"slices", "steps"})
