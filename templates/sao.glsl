@@ -36,15 +36,19 @@
 //   radius continuously; a tap fades out over AO_SAO_EDGE_BAND_PIXELS before the screen's
 //   border and the sum is divided by the taps the screen judges (at least 1), not by N: a tap
 //   off screen is not taken for an open one; a tap beside background counts as far as a
-//   surface is sure to be under it. So a depth that rounds differently (another depth
+//   surface is sure to be under it; a tap in the pixel's own texel counts from 0 at the
+//   texel's edge to fully AO_SAO_SELF_BAND_PIXELS past it (as SSAO's: there the four texels
+//   around it, clamped at the screen's edge, make a plane of the pixel's own depth that the
+//   surface's tilt reads as an occluder -- a 1 x 1 image read half dark); a tap on a
+//   non-finite texel (no depth at all, unlike background) is not judged. So a depth that rounds differently (another depth
 //   convention, another GPU) moves the output by about what it moved the depth.
 //   Only background (no depth to be near to) and non-finite values are steps.
 
 #if !defined(AO_PASS_AO) || !defined(AO_TECHNIQUE_SAO)
 #error aogen: sao.glsl is the AO pass of the sao technique
 #endif
-#if !defined(AO_SAO_SAMPLES) || !defined(AO_SAO_EDGE_BAND_PIXELS) || !defined(AO_SAO_EPSILON) || !defined(AO_DEPTH_PLANE_BAND)
-#error aogen: sao.glsl needs AO_SAO_SAMPLES and the constants AO_SAO_EDGE_BAND_PIXELS, AO_SAO_EPSILON, AO_DEPTH_PLANE_BAND (codegen writes them)
+#if !defined(AO_SAO_SAMPLES) || !defined(AO_SAO_EDGE_BAND_PIXELS) || !defined(AO_SAO_SELF_BAND_PIXELS) || !defined(AO_SAO_EPSILON) || !defined(AO_DEPTH_PLANE_BAND)
+#error aogen: sao.glsl needs AO_SAO_SAMPLES and the constants AO_SAO_EDGE_BAND_PIXELS, AO_SAO_SELF_BAND_PIXELS, AO_SAO_EPSILON, AO_DEPTH_PLANE_BAND (codegen writes them)
 #endif
 
 // Full-resolution pixels per view-space unit along x and y at P's depth (proj[0][0] and
@@ -109,13 +113,18 @@ float ao_pass(ivec2 target_pixel)
         float on_screen = ao_sao_screen_weight(pos, fsize);
         if (!(on_screen > 0.0)) continue; // off screen, or a NaN
         judged += on_screen;
+        float counts = ao_own_texel_weight(pos, p, AO_SAO_SELF_BAND_PIXELS);
+        if (!(counts > 0.0)) continue; // its own texel: judged open
         float texel_depth, plane_depth, plane_weight, surface;
         vec2 texel_at;
-        if (!ao_depth_readings(pos, ao_tap_level(length(offset)), texel_depth, texel_at, plane_depth, plane_weight, surface)) continue;
+        if (!ao_depth_readings(pos, ao_tap_level(length(offset)), texel_depth, texel_at, plane_depth, plane_weight, surface)) {
+            if (!ao_is_finite(texel_depth)) judged -= on_screen; // a NaN texel says nothing
+            continue;                                            // background: judged open
+        }
         float term = 0.0;
         if (plane_weight < 1.0) term = ao_sao_term(P, n, ao_view_position(texel_at / fsize, texel_depth), radius);
         if (plane_weight > 0.0) term = ao_lerp(term, ao_sao_term(P, n, ao_view_position(pos / fsize, plane_depth), radius), plane_weight);
-        sum += on_screen * surface * term;
+        sum += on_screen * counts * surface * term;
     }
     float visibility = clamp(1.0 - 2.0 * u.intensity * sum / max(judged, 1.0), 0.0, 1.0);
     return visibility > 0.0 ? pow(visibility, u.contrast) : 0.0;

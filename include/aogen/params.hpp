@@ -86,9 +86,10 @@ inline std::string field(std::string_view prefix, std::string_view name)
 // mean RMSE against ray-traced AO over eight SSAO variants of the default matrix (8 to 64
 // samples, half and full resolution, bilateral, box and no blur) on the ten built-in scenes
 // with normals, found by `aogen_tune --joint` (a narrowing grid, 75 settings) and checked on
-// six mesh scenes the search did not see: 41 % lower error on the training scenes (0.104 ->
-// 0.061) and 15 % on the unseen ones (0.038 -> 0.033) than the seeds' radius R and strength
-// 1 (BENCHMARKS.md, 2026-12-04). They hold on every depth convention because every
+// six mesh scenes the search did not see: 42 % lower error on the training scenes (0.104 ->
+// 0.060) and 16 % on the unseen ones (0.039 -> 0.032) than the seeds' radius R and strength
+// 1 (BENCHMARKS.md, 2026-12-01 and 2026-12-05: the search re-run with the smooth decisions
+// lands on the same values). They hold on every depth convention because every
 // per-sample decision is a smooth weight (ssao_bands below): a strength of 3.3 multiplies
 // each vote, and with the seeds' steps one vote flipping at the bias moved a pixel by 0.2.
 // The seeds' values stay in presets::taos_ssao() and the other SSAO presets.
@@ -326,23 +327,31 @@ struct vbao_params {
 // Nothing in it steps: the bias is a ramp, f falls to 0 at the radius, a tap off screen or on
 // background fades over a pixel as SSAO's smooth decisions do.
 //
-// The defaults of radius_per_ao_radius and intensity are tuned as GTAO's (BENCHMARKS.md).
+// The defaults of radius_per_ao_radius, bias and intensity are tuned as GTAO's: the values with
+// the lowest mean RMSE against ray-traced AO over eight SAO variants of the default matrix (8
+// to 32 taps, half and full resolution, bilateral and denoise) on the ten built-in scenes with
+// normals, found by `aogen_tune --joint` (a narrowing grid, 375 settings) and checked on six
+// mesh scenes the search did not see: 22 % lower error on the training scenes (0.078 ->
+// 0.061) and 21 % on the unseen ones (0.037 -> 0.029) than the first choice (radius R, the
+// paper's intensity 1, bias 0.02; BENCHMARKS.md, 2026-12-05).
 struct sao_params {
     // World-space radius of the disc the taps cover (the view-plane disc through P,
     // projected). To match ambient occlusion of radius R, use radius_per_ao_radius · R.
     static constexpr float_range radius_range{0.0f, max_world_length, true};
-    static constexpr float radius_per_ao_radius = 1.0f; // not tuned yet
+    // Tuned: 2.69 R -- the cubic falloff weighs a tap at half the radius by 0.42 and one at
+    // 0.8 of it by 0.05, so the disc must reach well past the AO radius to see it.
+    static constexpr float radius_per_ao_radius = 2.6875f;
     float radius = 1.0f;
 
     // The share of the radius a tap must rise above P's tangent plane (v·n) before it
     // occludes: depth quantization and tessellation make flat surfaces slightly concave. The
-    // paper's bias is a depth-proportional length; ours the radius's share (ours: 0.02).
+    // paper's bias is a depth-proportional length; ours the radius's share. Tuned: 0.05.
     static constexpr float_range bias_range{0.0f, 1.0f, false};
-    float bias = 0.02f;
+    float bias = 0.05f;
 
-    // The paper's sigma: how strongly the sum darkens. Not tuned yet: 1, the paper's default.
+    // The paper's sigma: how strongly the sum darkens. Tuned: 1.22 (the paper's default 1).
     static constexpr float_range intensity_range{0.0f, 100.0f, false};
-    float intensity = 1.0f;
+    float intensity = 1.21875f;
 
     // The paper's k: the visibility raised to it (> 0; 1 leaves it linear).
     static constexpr float_range contrast_range{0.0f, 100.0f, true};

@@ -276,6 +276,7 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
     if (pass == pass_kind::ao && v.tech == technique::sao) {
         // SAO's taps fade at the screen's border and at silhouettes over SSAO's smooth bands.
         c.push_back({"AO_SAO_EDGE_BAND_PIXELS", glsl_float(ssao_bands::edge_pixels)});
+        c.push_back({"AO_SAO_SELF_BAND_PIXELS", glsl_float(ssao_bands::self_pixels)});
         c.push_back({"AO_DEPTH_PLANE_BAND", glsl_float(ssao_bands::plane_per_spread)});
         c.push_back({"AO_SAO_EPSILON", glsl_float(sao_params::epsilon)});
     }

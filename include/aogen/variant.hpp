@@ -412,7 +412,7 @@ inline variant variant_from_name(const std::string& name)
     const std::vector<std::string> t = detail::split(name, '-');
     if (t.size() < 8)
         fail(subject, "has " + std::to_string(t.size()) + " tokens, too few",
-             "valid: ssao-s<N>|sao-s<N>|gtao-<S>x<N>|vbao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
+             "valid: ssao|sao-s<N>, gtao|vbao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
              "persp|ortho, cs|fs, then extras; aogen list");
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");

@@ -376,6 +376,16 @@ float ao_screen_edge_weight(vec2 pos, vec2 fsize, float band)
     return d > 0.0 ? min(d / band, 1.0) : 0.0;
 }
 
+// How much a tap at screen position `pos` counts against full-resolution pixel `p`'s own
+// surface: 0 anywhere in p's own texel (a comparison of the surface with its own depth, which
+// can only measure how the depth was quantized or clamped at the screen's edge), 1 from `band`
+// pixels past the texel's edge on (in the larger of x and y).
+float ao_own_texel_weight(vec2 pos, ivec2 p, float band)
+{
+    vec2 off = abs(pos - (vec2(p) + 0.5));
+    return clamp((max(off.x, off.y) - 0.5) / band, 0.0, 1.0);
+}
+
 // The level a tap `offset` full-resolution pixels from the pixel reads: ao_mip_level with a
 // depth MIP chain, 0 (the depth buffer) without one.
 int ao_tap_level(float offset)

@@ -158,7 +158,7 @@ TEST_CASE("variant: invalid names name the token and the valid values", "[varian
     CHECK_THAT(error_of([] { variant_from_name("ssao-s0-half-bilateral-gbufworld-std-persp-cs"); }),
                Contains("ssao samples: 0 is out of range (valid: 1..256)"));
     CHECK_THAT(error_of([] { variant_from_name("hbao-s16-half-bilateral-gbufworld-std-persp-cs"); }),
-               Contains("'hbao' is not a known name (valid: ssao, gtao, vbao)"));
+               Contains("'hbao' is not a known name (valid: ssao, gtao, vbao, sao)"));
     CHECK_THAT(error_of([] { variant_from_name("gtao-2x17-half-bilateral-gbufworld-std-persp-cs"); }),
                Contains("gtao steps: 17 is out of range (valid: 1..16)"));
     CHECK_THAT(error_of([] { variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs-fast"); }),
