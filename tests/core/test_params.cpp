@@ -150,6 +150,13 @@ TEST_CASE("params: defaults validate and follow DESIGN.md, GTAO's strength and t
     CHECK(aogen::vbao_params::radius_per_ao_radius == 1.15625f);
     CHECK(vb.thickness == 1.634375f);
     CHECK(vb.strength == 1.28125f);
+    // SAO's, tuned the same way (params.hpp; BENCHMARKS.md, 2026-12-05).
+    const aogen::sao_params sa;
+    CHECK_NOTHROW(aogen::validate(sa));
+    CHECK(aogen::sao_params::radius_per_ao_radius == 2.6875f);
+    CHECK(sa.intensity == 1.21875f);
+    CHECK(sa.bias == 0.05f);
+    CHECK(sa.contrast == 1.0f);
     CHECK(b.raw_depth_k == 1000.0f);
     CHECK(b.linear_sharpness == 10.0f);
     CHECK_NOTHROW(aogen::validate(aogen::ao_settings{}));
@@ -272,6 +279,26 @@ TEST_CASE("params: every vbao field rejects bad values and accepts its bounds", 
     CHECK_THAT(error_of([&] { aogen::validate(p); }), Contains("vbao.thickness: 0 is out of range (valid: > 0 and <= 100)"));
     p.thickness = 1e3f;
     CHECK_THAT(error_of([&] { aogen::validate(p, "settings.vbao"); }), Contains("settings.vbao.thickness: 1000 is out of range"));
+}
+
+TEST_CASE("params: every sao field rejects bad values and accepts its bounds", "[params]")
+{
+    using P = aogen::sao_params;
+    check_float_fields<P>({
+        {"sao.radius", P::radius_range, [](P& p, float v) { p.radius = v; }},
+        {"sao.bias", P::bias_range, [](P& p, float v) { p.bias = v; }},
+        {"sao.intensity", P::intensity_range, [](P& p, float v) { p.intensity = v; }},
+        {"sao.contrast", P::contrast_range, [](P& p, float v) { p.contrast = v; }},
+    });
+    P p;
+    p.contrast = 0; // pow(0, 0) is undefined
+    CHECK(error_of([&] { aogen::validate(p); }) == "sao.contrast: 0 is out of range (valid: > 0 and <= 100)");
+    p = {};
+    p.bias = 1.5f; // a share of the radius
+    CHECK(error_of([&] { aogen::validate(p); }) == "sao.bias: 1.5 is out of range (valid: 0..1)");
+    aogen::ao_settings all;
+    all.sao.intensity = -1.0f;
+    CHECK_THAT(error_of([&] { aogen::validate(all); }), Contains("sao.intensity: -1 is out of range"));
 }
 
 TEST_CASE("params: every blur field rejects bad values and accepts its bounds", "[params]")
