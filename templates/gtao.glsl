@@ -141,7 +141,7 @@ float ao_pass(ivec2 target_pixel)
 {
     ivec2 p;
     vec3 P, V, n;
-    if (!ao_slice_centre(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
+    if (!ao_pass_surface(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
 
     // The search radius on screen, capped at half its height, and the world radius the cap
     // leaves, which bounds the horizon search as u.radius does (common/slices.glsl).

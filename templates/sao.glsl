@@ -87,13 +87,9 @@ float ao_sao_screen_weight(vec2 pos, vec2 fsize)
 
 float ao_pass(ivec2 target_pixel)
 {
-    ivec2 p = ao_full_pixel(target_pixel);
-    float depth = ao_load_depth(p);
-    if (ao_is_background(depth)) return 1.0;
-    vec3 P = ao_view_position(ao_pixel_uv(p), depth);
-    if (!ao_is_finite(P)) return 1.0;
-    vec3 n;
-    if (!ao_surface_normal(p, P, ao_view_direction(P), n)) return 1.0;
+    ivec2 p;
+    vec3 P, V, n;
+    if (!ao_pass_surface(target_pixel, p, P, V, n)) return 1.0; // background, or no surface
     vec2 pixels_per_unit;
     float radius;
     ao_sao_radius(P, pixels_per_unit, radius);

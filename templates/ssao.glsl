@@ -173,8 +173,7 @@ float ao_ssao_screen_weight(vec2 pos, vec2 fsize)
 // in standard depth than in reversed-infinite (where the floor goes on past the far plane).
 float ao_ssao_self_weight(vec2 pos, ivec2 p)
 {
-    vec2 off = abs(pos - (vec2(p) + 0.5));
-    return clamp((max(off.x, off.y) - 0.5) / AO_SSAO_SELF_BAND_PIXELS, 0.0, 1.0);
+    return ao_own_texel_weight(pos, p, AO_SSAO_SELF_BAND_PIXELS);
 }
 #endif
 

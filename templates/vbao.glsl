@@ -189,7 +189,7 @@ float ao_pass(ivec2 target_pixel)
 {
     ivec2 p;
     vec3 P, V, n;
-    if (!ao_slice_centre(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
+    if (!ao_pass_surface(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
 
     // The search radius on screen and the world radius its cap leaves (common/slices.glsl,
     // as gtao.glsl): the latter bounds the samples' distance.

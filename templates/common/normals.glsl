@@ -95,3 +95,19 @@ bool ao_surface_normal(ivec2 p, vec3 P, vec3 V, out vec3 n)
     if (dot(n, V) < 0.0) n = -n;
     return true;
 }
+
+// The surface an AO pass (gtao.glsl, vbao.glsl, sao.glsl) works on at target pixel
+// `target_pixel`: `p`, the full-resolution pixel it reads; P, the view-space point there; V,
+// the unit direction from P to the camera; n, the normal facing V. False on background, a
+// non-finite P or no usable normal: the pass writes 1 there.
+bool ao_pass_surface(ivec2 target_pixel, out ivec2 p, out vec3 P, out vec3 V, out vec3 n)
+{
+    p = ao_full_pixel(target_pixel);
+    P = vec3(0.0), V = vec3(0.0, 0.0, 1.0), n = vec3(0.0, 0.0, 1.0);
+    float depth = ao_load_depth(p);
+    if (ao_is_background(depth)) return false;
+    P = ao_view_position(ao_pixel_uv(p), depth);
+    if (!ao_is_finite(P)) return false;
+    V = ao_view_direction(P);
+    return ao_surface_normal(p, P, V, n);
+}

@@ -1,5 +1,5 @@
 // common/slices.glsl -- what the slice-based AO passes (gtao.glsl, vbao.glsl) share: the
-// surface at the pixel, the search radius on screen, each slice's direction and plane, the
+// search radius on screen, each slice's direction and plane, the
 // normal projected onto that plane, and the slice's cosine-weighted measure. gtao.glsl's
 // header derives the measure.
 //
@@ -9,23 +9,8 @@
 // projected normal's angle. Over it the visible measure of directions is
 //     integral cos(t - n) |sin t| dt,
 // whose antiderivative from 0 is ao_slice_arc (both signs of t alike) and whose total is
-// ao_slice_unoccluded(n) = cos n + n sin n.
-
-// The surface a slice-based pass integrates over at target pixel `target_pixel`: `p`, the
-// full-resolution pixel it reads; P, the view-space point there; V, the unit direction from P
-// to the camera; n, the normal facing V (normals.glsl). False on background, a non-finite P or
-// no usable normal: the pass writes 1 there.
-bool ao_slice_centre(ivec2 target_pixel, out ivec2 p, out vec3 P, out vec3 V, out vec3 n)
-{
-    p = ao_full_pixel(target_pixel);
-    P = vec3(0.0), V = vec3(0.0, 0.0, 1.0), n = vec3(0.0, 0.0, 1.0);
-    float depth = ao_load_depth(p);
-    if (ao_is_background(depth)) return false;
-    P = ao_view_position(ao_pixel_uv(p), depth);
-    if (!ao_is_finite(P)) return false;
-    V = ao_view_direction(P);
-    return ao_surface_normal(p, P, V, n);
-}
+// ao_slice_unoccluded(n) = cos n + n sin n. The surface at the pixel is normals.glsl's
+// ao_pass_surface.
 
 // The search radius at P: `radius_pixels`, the world radius u.radius projected at P's depth
 // in full-resolution pixels (clip y = proj[1][1] * y (/ -z)), capped at half the screen's
