@@ -4,18 +4,21 @@
 //                  [--size 320x180] [--rays 4096] [--rounds 3] [--iterations 20] [--budget-ms 1000] [--warmup-ms 200]
 //                  [--device NAME] [--out out/report]
 //
-// Writes into --out: report.md (the tables), results.json (every number),
-// error_vs_time.png (report/plot_error_vs_time.py, python3-matplotlib) and
-// strips/<scene>.png (reference | variant | |error| for the Pareto-optimal variants, each
-// row labelled). results.json and report.md are written after every scene (marked
-// partial until the last), so an interrupted run keeps what it measured.
+// Writes into --out: report.html (the whole report as one self-contained page: the plot,
+// a sortable, filterable table, every variant's images on every scene), report.md (the
+// tables), results.json (every number), error_vs_time.svg (the plot, drawn here; no
+// Python) and strips/<scene>.png (reference | variant | |error| for the Pareto-optimal
+// variants, each row labelled). The set is written after every scene (marked partial
+// until the last), all files or none, so an interrupted run keeps what it measured.
 // Progress goes to stderr. A bad argument, scene or variant is one line on stderr and
 // exit status 1 (2 for command-line syntax), before anything is written; every file is
 // written to a temporary name and renamed.
 #include <aogen_report/arguments.hpp>
 #include <aogen_report/markdown.hpp>
+#include <aogen_report/page.hpp>
 #include <aogen_report/pareto.hpp>
 #include <aogen_report/run.hpp>
+#include <aogen_report/suite_page.hpp>
 #include <aogen_report/suite_report.hpp>
 
 #include <aogen/matrix.hpp>
@@ -26,17 +29,10 @@
 #include <CLI/CLI.hpp>
 
 #include <cctype>
-#include <cerrno>
 #include <chrono>
-#include <cstdlib>
-#include <cstring>
-#include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
 
@@ -108,69 +104,14 @@ std::map<std::string, aogen_report::strip_file> add_strips(const aogen_report::r
     return files;
 }
 
-// Runs `argv` (no shell: paths are passed as they are), its output discarded but for the
-// last line of its standard error, kept in `last_line` for an error message. Its exit
-// status, or -1 when it could not be started.
-int run_program(const std::vector<std::string>& argv, std::string& last_line)
+// The report's files but the strips: results.json, report.md, report.html and the plot.
+void add_report(aogen::tools::file_set& set, const aogen_report::report_data& d, const aogen_report::report_meta& meta,
+                const std::map<std::string, aogen_report::strip_file>& strips)
 {
-    int pipe_fds[2];
-    if (::pipe(pipe_fds) != 0) return -1;
-    const pid_t pid = ::fork();
-    if (pid < 0) return -1;
-    if (pid == 0) {
-        const int null = ::open("/dev/null", O_WRONLY);
-        ::dup2(null, 1);
-        ::dup2(pipe_fds[1], 2);
-        ::close(pipe_fds[0]);
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        ::execvp(args[0], args.data());
-        std::fprintf(stderr, "cannot run %s: %s\n", argv[0].c_str(), std::strerror(errno));
-        ::_exit(127);
-    }
-    ::close(pipe_fds[1]);
-    std::string err;
-    char buffer[4096];
-    for (ssize_t n; (n = ::read(pipe_fds[0], buffer, sizeof buffer)) != 0;)
-        if (n > 0) err.append(buffer, size_t(n));
-        else if (errno != EINTR) break;
-    ::close(pipe_fds[0]);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-    while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
-    last_line = err.substr(err.find_last_of('\n') == std::string::npos ? 0 : err.find_last_of('\n') + 1);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// aogen::error unless `python` runs and imports matplotlib, and the plot script is there:
-// checked before the run, so a missing plotter fails in a second, not after the references.
-void require_plotter(const std::string& python, const std::string& script)
-{
-    const std::string valid = "valid: --python naming a python3 with matplotlib (python3-matplotlib)";
-    std::string why;
-    if (run_program({python, "-c", "import matplotlib"}, why) != 0)
-        aogen::fail("--python", aogen::quote(python) + " cannot import matplotlib" + (why.empty() ? "" : ": " + aogen::quote(why)), valid);
-    std::ifstream in(script);
-    if (!in) aogen::fail("--plot-script", aogen::quote(script) + " cannot be read", "valid: the report's plot_error_vs_time.py");
-}
-
-// error_vs_time.png of `results` (results.json's text), made in a scratch folder of its own.
-std::string plot(const std::string& python, const std::string& script, const std::string& results)
-{
-    std::string scratch = (std::filesystem::temp_directory_path() / "aogen_report.XXXXXX").string();
-    if (!::mkdtemp(scratch.data())) aogen::fail("error_vs_time.png", "no scratch directory: " + std::string(std::strerror(errno)), "valid: a writable TMPDIR");
-    const std::filesystem::path dir(scratch);
-    struct cleanup {
-        std::filesystem::path dir;
-        ~cleanup() { std::error_code ec; std::filesystem::remove_all(dir, ec); }
-    } remove{dir};
-    aogen::tools::write_file(dir / "results.json", results);
-    std::string why;
-    if (run_program({python, script, (dir / "results.json").string(), (dir / "error_vs_time.png").string()}, why) != 0)
-        aogen::fail("error_vs_time.png", "the plot script failed" + (why.empty() ? "" : ": " + aogen::quote(why)),
-                    "valid: python3 with matplotlib (python3-matplotlib)");
-    return aogen::tools::read_file((dir / "error_vs_time.png").string());
+    set.add("results.json", aogen_report::results_json(d, meta));
+    set.add("report.md", aogen_report::report_markdown(d, meta, strips));
+    set.add("report.html", aogen_report::report_page(d, meta));
+    set.add("error_vs_time.svg", aogen_report::error_time_svg(aogen_report::plot_points(d), aogen_report::plot_title(d)));
 }
 
 // Built-in case names or case JSON files; empty: every built-in case.
@@ -183,8 +124,8 @@ std::vector<aogen_report::stability_case> load_cases(const std::string& list)
     return out;
 }
 
-// aogen_report --suite stability: every variant on every case, report.md and results.json
-// into `out`; with `check`, exit 1 when any run fails.
+// aogen_report --suite stability: every variant on every case, report.html, report.md and
+// results.json into `out`; with `check`, exit 1 when any run fails.
 int stability_main(const std::string& cases, const std::string& variants, int rays, const std::string& device, bool validation,
                    const std::string& out, bool check, const std::string& command, const std::function<void(const std::string&)>& progress)
 {
@@ -199,6 +140,7 @@ int stability_main(const std::string& cases, const std::string& variants, int ra
     aogen::tools::file_set set(out);
     set.add("results.json", aogen_report::suite_json(d, command));
     set.add("report.md", aogen_report::suite_markdown(d, command));
+    set.add("report.html", aogen_report::suite_page(d, command));
     set.commit();
     progress("wrote " + (std::filesystem::path(out) / "report.md").string() + ": " + std::to_string(d.failures()) + " failed runs");
     if (check && d.failures() > 0)
@@ -213,7 +155,6 @@ int main(int argc, char** argv)
 {
     CLI::App app{"aogen_report: each AO variant's error against ray-traced ground truth, and its run time"};
     std::string scenes, variants, size = "320x180", out = "out/report", device;
-    std::string plot_script = AOGEN_REPORT_PLOT_SCRIPT, python = AOGEN_REPORT_PYTHON;
     int rays = 4096;
     aogen::vulkan::timing_options timing = aogen_report::report_settings{}.timing;
     bool validation = false, no_saving = false, no_floor = false;
@@ -234,8 +175,6 @@ int main(int argc, char** argv)
         ->capture_default_str()->check(aogen::tools::number_in(0.0, 60000.0));
     app.add_option("--device", device, "use the Vulkan device whose name contains this (default: AOGEN_VULKAN_DEVICE, a discrete GPU, lavapipe)");
     app.add_option("--out", out, "the report directory")->capture_default_str()->check(aogen::tools::not_empty("a directory path"));
-    app.add_option("--plot-script", plot_script, "the error-against-time plot script")->capture_default_str();
-    app.add_option("--python", python, "the Python that runs it (with matplotlib)")->capture_default_str();
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
     app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
     app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch and bandwidth floors");
@@ -266,7 +205,7 @@ int main(int argc, char** argv)
     try {
         // Options that belong to the other mode are refused, not ignored.
         const std::vector<std::string> report_only{"--scenes", "--size", "--rounds", "--iterations", "--budget-ms", "--warmup-ms",
-                                                   "--plot-script", "--python", "--no-feature-saving", "--no-fetch-floor"};
+                                                   "--no-feature-saving", "--no-fetch-floor"};
         for (const std::string& o : report_only)
             if (!suite.empty() && app.count(o) > 0)
                 aogen::fail(o, "is an option of the error-against-time report, not of --suite " + suite, "valid: leave it out with --suite");
@@ -288,14 +227,12 @@ int main(int argc, char** argv)
         const std::filesystem::path folder(out);
         // Everything a run needs besides its own work, checked before it starts.
         aogen::tools::require_writable_folder(folder, "--out");
-        require_plotter(python, plot_script);
-        // After every scene but the last: the tables so far, marked partial, as one set.
+        // After every scene but the last: the report so far, marked partial, as one set.
         s.scene_done = [&](const aogen_report::report_data& so_far) {
             if (so_far.scenes.size() == s.scenes.size()) return;
             const aogen_report::report_meta partial{command.str(), false};
             aogen::tools::file_set set(folder);
-            set.add("results.json", aogen_report::results_json(so_far, partial));
-            set.add("report.md", aogen_report::report_markdown(so_far, partial, {}));
+            add_report(set, so_far, partial, {});
             set.commit();
             s.progress("wrote the " + std::to_string(so_far.scenes.size()) + " scenes so far to " + (folder / "results.json").string());
         };
@@ -303,11 +240,7 @@ int main(int argc, char** argv)
         // The finished report: every file made first, then written all together.
         const aogen_report::report_meta meta{command.str(), true};
         aogen::tools::file_set set(folder);
-        const std::string results = aogen_report::results_json(d, meta);
-        set.add("results.json", results);
-        const auto strips = add_strips(d, set);
-        set.add("report.md", aogen_report::report_markdown(d, meta, strips));
-        set.add("error_vs_time.png", plot(python, plot_script, results));
+        add_report(set, d, meta, add_strips(d, set));
         set.commit();
         s.progress("wrote " + (folder / "report.md").string() + " (compile " + aogen_report::detail::fixed(d.phases.compile, 1) + " s, trace " +
                    aogen_report::detail::fixed(d.phases.trace, 1) + " s, score " + aogen_report::detail::fixed(d.phases.score, 1) + " s, time " +

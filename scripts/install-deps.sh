@@ -18,7 +18,7 @@ packages=(
   libembree-dev               # Embree 3: the ray-traced ground truth (truth)
   libassimp-dev assimp-testmodels   # mesh scenes (scenes) and the real meshes they use
   libstb-dev                  # PNG image strips of the report (stb_image_write)
-  python3-matplotlib          # the report's error-against-time plot
+  chromium                    # the report's page tested in a real browser (headless)
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers   # the Vulkan harness (lavapipe)
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # the GL runner (llvmpipe, EGL surfaceless)
   clang-14 libclang-rt-14-dev # the fuzz targets (tests/fuzz, scripts/fuzz.sh): libFuzzer, ASan, UBSan

@@ -1,6 +1,7 @@
 # bench/device/setup.sh — sourced by the H200 run scripts (bench/runs/), from the repository root: unpacks
 # what the device tool carried (carry [".gl", ".carry"]) and sets B (the binaries), L (the log)
-# and /tmp/fakepy (a stand-in plotter: the image has no matplotlib, the PNG is not used).
+# and /tmp/fakepy (the stand-in plotter that run scripts from before issue 24 pass as --python;
+# aogen_report draws its plot itself now and has no --python).
 # What to carry: build here, pack bin/ (aogen_report, aogen_vulkan_tests), lib/ (what ldd
 # lists beyond the system: embree, assimp, tbb, draco, minizip) and models/ (the assimp test
 # models) into .carry/pack.tar.xz, and the Debian loader debs (libvulkan1, the libglvnd

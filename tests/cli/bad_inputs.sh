@@ -729,13 +729,14 @@ group_report() {
   expect_fail -s 1 -m 'file' -- "${rep[@]}" --scenes crease --out file/report
   new_case out-empty
   expect_fail -s 1 -m '--out' -- "${rep[@]}" --scenes crease --out ''
-  new_case plot-fails-over-a-report # the earlier report's files stay as they were
-  mkdir -p "$c/out/strips"
+  new_case page-cannot-be-written-over-a-report # a folder where report.html belongs: the earlier report's files stay as they were
+  mkdir -p "$c/out/strips" "$c/out/report.html"
   echo '{"earlier": true}' >"$c/out/results.json"
   echo '# the earlier report' >"$c/out/report.md"
-  echo 'earlier plot' >"$c/out/error_vs_time.png"
   echo 'earlier strip' >"$c/out/strips/crease.png"
-  expect_fail -P -m 'plot|python|/bin/false' -- "${rep[@]}" --scenes crease --python /bin/false --out out
+  expect_fail -P -m 'report\.html' -- "${rep[@]}" --scenes crease --out out
+  new_case python-option-is-gone # the plot is drawn without Python: --python is no option
+  expect_fail -x 2 -m '--python' -- "${rep[@]}" --scenes crease --python /usr/bin/python3 --out out
 
   new_case parse-error-not-a-number
   expect_fail -x 2 -m '--rays' -- "$report" --variants $gtao --scenes crease --size 16x16 --rays abc "${timing[@]}" --out out

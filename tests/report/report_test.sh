@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # End-to-end tests of aogen_report, one case per ctest test:
-#   report_test.sh AOGEN_REPORT CASE
+#   report_test.sh AOGEN_REPORT CASE AOGEN_PAGE_TESTS
 #   run     a small report, twice: every file is there, the errors of the two runs are
 #           identical (only times may differ), the reference's noise is well below the
 #           errors, no NaN/Inf (raw or shipped), every time has its spread and fetch floor,
-#           the Pareto marks agree with the numbers.
+#           the Pareto marks agree with the numbers; report.html opens in chromium
+#           (AOGEN_PAGE_TESTS' "a report made by aogen_report") without a console error,
+#           a marker per timed variant, and every scene's images for a selected row.
 #   partial a report killed after its first scene keeps results.json and report.md of
 #           that scene, marked partial.
 #   errors  bad arguments: one line on stderr naming what is wrong, non-zero exit,
@@ -15,7 +17,7 @@
 #           file makes --check exit 1 and the report name it.
 #   tune    aogen_tune's smallest search: the settings it evaluates, its JSON and table.
 set -uo pipefail
-report=$(realpath "$1") case=$2
+report=$(realpath "$1") case=$2 page_tests=${3:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -41,7 +43,10 @@ run)
       --validation --out "$work/r$run" 2>"$work/progress$run" || { fail "run $run exited non-zero"; cat "$work/progress$run"; }
   done
   grep -q "\[scene 3/3\] stairs: timing" "$work/progress1" || fail "no progress on stderr"
-  for f in report.md results.json error_vs_time.png; do [ -s "$work/r1/$f" ] || fail "$f missing"; done
+  for f in report.html report.md results.json error_vs_time.svg; do [ -s "$work/r1/$f" ] || fail "$f missing"; done
+  [ -e "$work/r1/error_vs_time.png" ] && fail "error_vs_time.png is made (the plot is SVG, drawn without Python)"
+  AOGEN_PAGE="$work/r1/report.html" "$page_tests" "page: a report made by aogen_report" >"$work/page" 2>&1 ||
+    { fail "report.html in chromium"; tail -30 "$work/page"; }
   ls "$work"/r1/strips/*.png >/dev/null 2>&1 || fail "no image strips"
   python3 - "$work/r1/results.json" "$work/r2/results.json" <<'PY' || fail "results.json checks"
 import json, sys
@@ -122,6 +127,7 @@ v = r["variants"][0]
 assert len(v["scenes"]) == len(r["scenes"]) and v["scenes"][0]["default"]["pixels"] > 1000
 PY
   grep -q "Partial report" "$work/p/report.md" || fail "the partial report.md does not say so"
+  grep -q "Partial report" "$work/p/report.html" || fail "the partial report.html does not say so"
   ls "$work/p" | grep -q tmp && fail "a temporary file was left behind"
   ;;
 errors)
@@ -175,6 +181,7 @@ import re  # the largest radius the settings take: 1e15 / 2.6875 (params.hpp's m
 assert float(re.search(r"\(([0-9.e+]+)\)", cases["radius_huge"]["about"]).group(1)) > 3.7e14, cases["radius_huge"]["about"]
 PY
   grep -q "| 31 | scale_invariance |" "$work/s/report.md" || fail "report.md lacks the case table"
+  grep -q '<td class="num">31</td><td>scale_invariance</td>' "$work/s/report.html" || fail "report.html lacks the case table"
   grep -q "^None\.$" "$work/s/report.md" || fail "report.md lists failures"
   # A planted failure: a criterion no variant can meet (RMSE <= 0) fails --check, named.
   cat >"$work/impossible.json" <<'JSON'

@@ -3,6 +3,7 @@
 //     aogen_report::rgb_image img(width, height);          // black
 //     img.set(x, y, {255, 128, 0});
 //     std::string bytes = aogen_report::encode_png(img);   // deterministic: same pixels, same bytes
+//     std::string grey = aogen_report::encode_png(w, h, 1, levels); // 1 to 4 channels of bytes
 //
 // The encoder is compiled into each translation unit that includes this header (static
 // functions), so any number of programs and tests may include it.
@@ -44,16 +45,21 @@ struct rgb_image {
     }
 };
 
-inline std::string encode_png(const rgb_image& img)
+// PNG bytes of `pixels`: `channels` bytes per pixel (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA),
+// row-major, top row first.
+inline std::string encode_png(int width, int height, int channels, const std::vector<uint8_t>& pixels)
 {
-    if (img.width < 1 || img.height < 1 || img.pixels.size() != size_t(img.width) * img.height * 3)
-        aogen::fail("png", std::to_string(img.width) + "x" + std::to_string(img.height) + " with " + std::to_string(img.pixels.size()) + " bytes",
-                    "valid: width, height >= 1 and 3 bytes per pixel");
+    if (width < 1 || height < 1 || channels < 1 || channels > 4 || pixels.size() != size_t(width) * height * channels)
+        aogen::fail("png", std::to_string(width) + "x" + std::to_string(height) + " with " + std::to_string(pixels.size()) + " bytes of " +
+                               std::to_string(channels) + " channels",
+                    "valid: width, height >= 1, 1 to 4 channels and that many bytes per pixel");
     std::string out;
     const auto append = [](void* context, void* data, int size) { static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size)); };
-    if (!stbi_write_png_to_func(append, &out, img.width, img.height, 3, img.pixels.data(), img.width * 3))
+    if (!stbi_write_png_to_func(append, &out, width, height, channels, pixels.data(), width * channels))
         aogen::fail("png", "the encoder failed", "valid: a smaller image");
     return out;
 }
+
+inline std::string encode_png(const rgb_image& img) { return encode_png(img.width, img.height, 3, img.pixels); }
 
 } // namespace aogen_report

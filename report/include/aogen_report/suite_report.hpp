@@ -19,9 +19,11 @@
 
 #include "number_text.hpp"
 #include "suite.hpp"
+#include "text_table.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <sstream>
 
 namespace aogen_report {
@@ -68,25 +70,33 @@ inline std::string suite_json(const suite_data& d, const std::string& command)
     return j.dump(2) + "\n";
 }
 
-inline std::string suite_markdown(const suite_data& d, const std::string& command)
+// How it was run, one Markdown line per fact.
+inline std::vector<std::string> suite_facts(const suite_data& d, const std::string& command)
 {
-    using detail::fixed;
-    std::ostringstream md;
     size_t runs = 0;
     for (const suite_case_record& c : d.cases)
         for (const suite_run& r : c.runs) runs += r.ran();
-    md << "# aogen stability suite\n\n";
-    md << "- Device: **" << d.device << "**\n- " << d.cases.size() << " cases × " << d.variants.size() << " variants: " << runs << " runs, **"
-       << d.failures() << " failed**\n- Reference: Embree, " << d.grid * d.grid << " rays per pixel\n- Command: `" << command << "`\n\n";
-    md << "**How to read it.** Each case is a scene at an extreme and its benign twin (aogen_report/stability.hpp). A run passes "
-          "when no pass computed a NaN or an infinity (raw values, before the guard that keeps them from the output), no raw value "
-          "lies outside [0, 1] by more than rounding, every background pixel (and every planted fault) is exactly 1, the depth "
-          "conventions agree where the case compares them, a faulted scene matches its twin pixel by pixel away from its faults, "
-          "a scaled scene matches the scene pixel by pixel, and the RMSE against the ray-traced reference is at most the case's "
-          "ratio times the same variant's RMSE on the twin plus a slack. Each variant runs in the projection of the case's camera.\n\n";
+    return {"Device: **" + d.device + "**",
+            std::to_string(d.cases.size()) + " cases × " + std::to_string(d.variants.size()) + " variants: " + std::to_string(runs) + " runs, **" +
+                std::to_string(d.failures()) + " failed**",
+            "Reference: Embree, " + std::to_string(d.grid * d.grid) + " rays per pixel", "Command: `" + command + "`"};
+}
 
-    md << "## Cases\n\nEach case's run closest to its error limit, with the figure that decided it (every run's is in "
-          "results.json).\n\n| # | case | stresses | criterion | reference noise | closest to its limit |\n|---:|---|---|---|---:|---|\n";
+inline std::string suite_how_to_read()
+{
+    return "**How to read it.** Each case is a scene at an extreme and its benign twin (aogen_report/stability.hpp). A run passes "
+           "when no pass computed a NaN or an infinity (raw values, before the guard that keeps them from the output), no raw value "
+           "lies outside [0, 1] by more than rounding, every background pixel (and every planted fault) is exactly 1, the depth "
+           "conventions agree where the case compares them, a faulted scene matches its twin pixel by pixel away from its faults, "
+           "a scaled scene matches the scene pixel by pixel, and the RMSE against the ray-traced reference is at most the case's "
+           "ratio times the same variant's RMSE on the twin plus a slack. Each variant runs in the projection of the case's camera.";
+}
+
+// The cases: what each stresses, its criterion, the run closest to its limit.
+inline text_table suite_cases_table(const suite_data& d)
+{
+    using detail::fixed;
+    text_table t{{"#", "case", "stresses", "criterion", "reference noise", "closest to its limit"}, "rlllrl", {}};
     for (size_t i = 0; i < d.cases.size(); ++i) {
         const stability_criterion& k = d.cases[i].c.criterion;
         const suite_run* closest = nullptr;
@@ -100,9 +110,42 @@ inline std::string suite_markdown(const suite_data& d, const std::string& comman
         std::string criterion;
         for (const std::string& part : {error, depth, pixels, scales})
             if (!part.empty()) criterion += (criterion.empty() ? "" : "; ") + part;
-        md << "| " << i + 1 << " | " << d.cases[i].c.name << " | " << d.cases[i].c.about << " | " << criterion << " | " << fixed(d.cases[i].truth_noise, 4)
-           << " | " << (closest ? "`" + closest->variant + "`: " + closest->decided_by : "–") << " |\n";
+        t.rows.push_back({std::to_string(i + 1), d.cases[i].c.name, d.cases[i].c.about, criterion, fixed(d.cases[i].truth_noise, 4),
+                          closest ? "`" + closest->variant + "`: " + closest->decided_by : "–"});
     }
+    return t;
+}
+
+// Every failed run with the figure that decided it.
+inline std::vector<std::string> suite_failure_lines(const suite_data& d)
+{
+    std::vector<std::string> lines;
+    for (const suite_case_record& c : d.cases)
+        for (const suite_run& r : c.runs)
+            if (r.ran() && !r.pass) lines.push_back("**" + c.c.name + "**, `" + r.variant + "`: " + r.decided_by);
+    return lines;
+}
+
+// The runs that could not happen, one line per case and reason.
+inline std::vector<std::string> suite_not_run_lines(const suite_data& d)
+{
+    std::map<std::string, size_t> skipped;
+    for (const suite_case_record& c : d.cases)
+        for (const suite_run& r : c.runs)
+            if (!r.ran()) ++skipped[c.c.name + ": " + r.skipped];
+    std::vector<std::string> lines;
+    for (const auto& [why, n] : skipped) lines.push_back(why + " (" + std::to_string(n) + (n == 1 ? " variant" : " variants") + ")");
+    return lines;
+}
+
+inline std::string suite_markdown(const suite_data& d, const std::string& command)
+{
+    std::ostringstream md;
+    md << "# aogen stability suite\n\n";
+    for (const std::string& fact : suite_facts(d, command)) md << "- " << fact << "\n";
+    md << "\n" << suite_how_to_read() << " The same report as a page: [report.html](report.html).\n\n";
+    md << "## Cases\n\nEach case's run closest to its error limit, with the figure that decided it (every run's is in "
+          "results.json).\n\n" << markdown_table(suite_cases_table(d));
 
     md << "\n## Variants × cases\n\n✓ passed, ✗ failed, – could not run (columns: the cases' numbers above).\n\n| variant |";
     for (size_t i = 0; i < d.cases.size(); ++i) md << " " << i + 1 << " |";
@@ -121,18 +164,13 @@ inline std::string suite_markdown(const suite_data& d, const std::string& comman
     }
 
     md << "\n## Failures\n\n";
-    if (d.failures() == 0) md << "None.\n";
-    for (const suite_case_record& c : d.cases)
-        for (const suite_run& r : c.runs)
-            if (r.ran() && !r.pass) md << "- **" << c.c.name << "**, `" << r.variant << "`: " << r.decided_by << "\n";
-
-    std::map<std::string, size_t> skipped;
-    for (const suite_case_record& c : d.cases)
-        for (const suite_run& r : c.runs)
-            if (!r.ran()) ++skipped[c.c.name + ": " + r.skipped];
-    if (!skipped.empty()) {
+    const std::vector<std::string> failures = suite_failure_lines(d);
+    if (failures.empty()) md << "None.\n";
+    for (const std::string& line : failures) md << "- " << line << "\n";
+    const std::vector<std::string> not_run = suite_not_run_lines(d);
+    if (!not_run.empty()) {
         md << "\n## Not run\n\n";
-        for (const auto& [why, n] : skipped) md << "- " << why << " (" << n << (n == 1 ? " variant" : " variants") << ")\n";
+        for (const std::string& line : not_run) md << "- " << line << "\n";
     }
     return md.str();
 }
