@@ -36,17 +36,25 @@ inline std::string html_escape(const std::string& text)
 }
 
 // A line of the report's Markdown as HTML: `code`, **strong** and *emphasis* (not nested
-// inside code); an unpaired mark is kept as the character it is.
+// inside code). As in CommonMark, a mark opens only before a non-space and closes only
+// after one ("ao^p * 2" keeps its star); an unpaired mark is kept as the character it is.
 inline std::string html_from_markdown(const std::string& markdown)
 {
+    const auto is_space = [&](size_t at) { return at >= markdown.size() || markdown[at] == ' '; };
+    // The first closing `mark` after `from`: preceded by a non-space.
+    const auto closing = [&](const std::string& mark, size_t from) {
+        for (size_t at = markdown.find(mark, from); at != std::string::npos; at = markdown.find(mark, at + 1))
+            if (!is_space(at - 1)) return at;
+        return std::string::npos;
+    };
     std::string out;
     size_t i = 0;
-    const auto closes = [&](const std::string& mark, size_t from) { return markdown.find(mark, from); };
     while (i < markdown.size()) {
         const char c = markdown[i];
         const bool strong = markdown.compare(i, 2, "**") == 0;
         const std::string mark = c == '`' ? "`" : strong ? "**" : c == '*' ? "*" : "";
-        const size_t end = mark.empty() ? std::string::npos : closes(mark, i + mark.size());
+        const bool opens = !mark.empty() && (c == '`' || !is_space(i + mark.size()));
+        const size_t end = opens ? (c == '`' ? markdown.find(mark, i + 1) : closing(mark, i + mark.size() + 1)) : std::string::npos;
         if (end == std::string::npos || end == i + mark.size()) {
             out += html_escape(std::string(1, c));
             ++i;

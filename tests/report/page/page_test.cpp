@@ -363,6 +363,11 @@ TEST_CASE("page: a report made by aogen_report", "[.]")
     CHECK(b.evaluate("new Promise(r => { const t = setInterval(() => { if (document.getElementById('strip-rows').dataset.variant) "
                      "{ clearInterval(t); r(document.querySelectorAll('#strip-rows figure').length); } }, 20); })") == results["scenes"].size());
     CHECK(b.errors().empty());
+    // The plot alone, as report.md shows it: well-formed SVG with the same markers.
+    b.open("file://" + (fs::absolute(page).parent_path() / "error_vs_time.svg").string());
+    CHECK(b.evaluate("document.querySelectorAll('parsererror').length") == 0);
+    CHECK(b.evaluate("document.querySelectorAll('.point[data-panel=\"default\"]').length") == timed);
+    CHECK(b.errors().empty());
 }
 
 // docs/report_page.png: a real report at 1280 × 800 with the fastest Pareto variant selected
@@ -383,4 +388,48 @@ TEST_CASE("page: screenshot", "[.]")
     b.mouse_move(at[0].get<double>(), at[1].get<double>());
     aogen::tools::write_file(out, b.screenshot(1280, 800));
     CHECK(b.errors().empty());
+}
+
+// A crowded front, as the default report's is between 2 and 5 ms: forty Pareto-optimal
+// variants a few per cent apart. Measured by the browser's own text layout (getBBox), no two
+// labels overlap, no label covers a marker, and every label lies inside its panel.
+TEST_CASE("page: the plot's labels collide with nothing on a crowded front")
+{
+    std::vector<aogen_report::plot_point> points;
+    for (size_t i = 0; i < 40; ++i) {
+        const double ms = 2.0 * std::pow(1.025, double(i)), error = 0.09 - 0.0008 * double(i);
+        const std::string name = "gtao-" + std::to_string(i % 4 + 1) + "x" + std::to_string(i / 4 + 1) + "-half-denoise-gbufworld-std-persp-cs";
+        points.push_back({i, name, aogen_report::plot_label(name), "gtao", "compute", ms, ms * 0.95, ms * 1.05, error, error, true, true});
+    }
+    scratch s;
+    aogen::tools::write_file(s.dir / "plot.svg", aogen_report::error_time_svg(points, "crowded"));
+    aogen_test::browser b(chromium());
+    b.open("file://" + (s.dir / "plot.svg").string());
+    CHECK(b.errors().empty());
+    CHECK(b.evaluate("document.querySelectorAll('parsererror').length") == 0); // well-formed XML
+    CHECK(b.evaluate("document.querySelectorAll('.point').length") == 80);
+    const json boxes = b.evaluate(R"((() => {
+        const box = (e) => { const r = e.getBBox(); return [r.x, r.y, r.x + r.width, r.y + r.height]; };
+        return Array.from(document.querySelectorAll('.panel')).map(panel => ({
+            frame: box(panel.querySelector('rect')),
+            labels: Array.from(panel.querySelectorAll('.label')).map(box),
+            points: Array.from(panel.querySelectorAll('.point')).map(box)}));
+    })())");
+    for (const json& panel : boxes) {
+        const auto overlap = [](const json& a, const json& c) {
+            return a[0].get<double>() < c[2].get<double>() && c[0].get<double>() < a[2].get<double>() && a[1].get<double>() < c[3].get<double>() &&
+                   c[1].get<double>() < a[3].get<double>();
+        };
+        const json& labels = panel["labels"];
+        CHECK(labels.size() >= 5); // some are placed, not none
+        CHECK(labels.size() < 40); // and a crowded front does not get them all
+        for (size_t i = 0; i < labels.size(); ++i) {
+            CHECK(labels[i][0] >= panel["frame"][0]);
+            CHECK(labels[i][2] <= panel["frame"][2]);
+            CHECK(labels[i][1] >= panel["frame"][1]);
+            CHECK(labels[i][3] <= panel["frame"][3]);
+            for (size_t k = i + 1; k < labels.size(); ++k) CHECK_FALSE(overlap(labels[i], labels[k]));
+            for (const json& p : panel["points"]) CHECK_FALSE(overlap(labels[i], p));
+        }
+    }
 }
