@@ -45,7 +45,7 @@ th[aria-sort="descending"] button::after { content: " ▼"; }
 #variant-table tbody tr { cursor: pointer; }
 #variant-table tbody tr:hover { background: #f4f8ff; }
 #variant-table tbody tr[aria-selected="true"] { background: #ffe9a8; }
-.table-scroll { max-height: 520px; overflow: auto; border: 1px solid #d0d0d0; display: inline-block; }
+.table-scroll { max-height: 520px; max-width: 100%; overflow: auto; border: 1px solid #d0d0d0; display: inline-block; }
 #filters { margin: 8px 0; display: flex; gap: 16px; flex-wrap: wrap; align-items: center; }
 #filters label { font-size: 13px; }
 #plot svg { max-width: 100%; height: auto; }
