@@ -36,7 +36,7 @@ TEST_CASE("html text: the report's Markdown marks become HTML, everything else i
     CHECK(html_from_markdown("**Device: <i>x</i>**") == "<strong>Device: &lt;i&gt;x&lt;/i&gt;</strong>");
 }
 
-TEST_CASE("text table: one table as Markdown and as HTML; a ragged row is refused")
+TEST_CASE("text table: one table as Markdown and as HTML, a ragged row refused")
 {
     text_table t{{"scene", "RMSE"}, "lr", {{"`<crease>`", "0.0500"}}};
     CHECK(markdown_table(t) == "| scene | RMSE |\n|---|---:|\n| `<crease>` | 0.0500 |\n");
