@@ -20,7 +20,8 @@
 // Images: the reference once per scene (8-bit grey, alpha 0 where no pixel is scored),
 // and each run's AO as read back (8-bit grey at the target's resolution; the script shows
 // a half-resolution one at full size by nearest upsampling, as the strips do). The page
-// draws the error panel from the two, so each image is stored once.
+// draws the error panel from the two, so each image is stored once. A scene wider than
+// page_image_max_width is shown box-filtered down by a whole factor (display_grid).
 #pragma once
 
 #include "html_text.hpp"
@@ -35,6 +36,7 @@
 #include <nlohmann/json.hpp>
 
 #include <sstream>
+#include <utility>
 
 namespace aogen_report {
 
@@ -62,13 +64,61 @@ namespace detail {
 // A PNG data: URI.
 inline std::string png_uri(const std::string& png) { return "data:image/png;base64," + base64(png); }
 
-// The scene's reference as grey + alpha: alpha 255 where a pixel is scored, 0 elsewhere.
-inline std::string reference_png(const reference& r)
+// The page shows every image at most page_image_max_width pixels wide: a larger scene's
+// images are box-filtered down by a whole factor (1920 × 1080 → 480 × 270), so a 1080p
+// report's page stays tens of megabytes, not hundreds. The numbers are always the
+// full-resolution ones.
+inline constexpr int page_image_max_width = 480;
+
+struct display_grid {
+    int factor = 1;          // screen pixels per displayed pixel, along each axis
+    int width = 0, height = 0; // the displayed size
+    display_grid(int screen_width, int screen_height)
+        : factor((screen_width + page_image_max_width - 1) / page_image_max_width),
+          width((screen_width + factor - 1) / factor), height((screen_height + factor - 1) / factor)
+    {
+    }
+};
+
+// Per displayed pixel, the mean of `values` (screen-sized) over its block's valid pixels,
+// as a grey level; `valid_out` (when given) 1 where the block has any.
+inline std::vector<uint8_t> block_means(const std::vector<float>& values, const std::vector<uint8_t>& valid, int screen_width,
+                                        const display_grid& g, std::vector<uint8_t>* valid_out = nullptr)
 {
-    std::vector<uint8_t> pixels(size_t(r.width) * r.height * 2, 0);
-    for (size_t i = 0; i < r.valid.size(); ++i)
-        if (r.valid[i]) pixels[2 * i] = grey(r.ao[i])[0], pixels[2 * i + 1] = 255;
-    return encode_png(r.width, r.height, 2, pixels);
+    const int screen_height = int(values.size()) / screen_width;
+    std::vector<uint8_t> grey_levels(size_t(g.width) * g.height, 255);
+    if (valid_out) valid_out->assign(grey_levels.size(), 0);
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x) {
+            double sum = 0;
+            int count = 0;
+            for (int sy = y * g.factor; sy < std::min(screen_height, (y + 1) * g.factor); ++sy)
+                for (int sx = x * g.factor; sx < std::min(screen_width, (x + 1) * g.factor); ++sx)
+                    if (valid[size_t(sy) * screen_width + sx]) sum += values[size_t(sy) * screen_width + sx], ++count;
+            if (count == 0) continue;
+            grey_levels[size_t(y) * g.width + x] = grey(float(sum / count))[0];
+            if (valid_out) (*valid_out)[size_t(y) * g.width + x] = 1;
+        }
+    return grey_levels;
+}
+
+// The scene's reference as displayed, grey + alpha: alpha 255 where a pixel is scored, 0 elsewhere.
+inline std::string reference_png(const reference& r, const display_grid& g)
+{
+    std::vector<uint8_t> valid;
+    const std::vector<uint8_t> levels = block_means(r.ao, r.valid, r.width, g, &valid);
+    std::vector<uint8_t> pixels(levels.size() * 2);
+    for (size_t i = 0; i < levels.size(); ++i) pixels[2 * i] = valid[i] ? levels[i] : 0, pixels[2 * i + 1] = valid[i] ? 255 : 0;
+    return encode_png(g.width, g.height, 2, pixels);
+}
+
+// A run's AO as displayed, and the factor the page upsamples it by: as read back when the
+// scene is shown at full size (a half-resolution target ×2, by nearest upsampling), else
+// the block means of its full-resolution image over the reference's valid pixels.
+inline std::pair<std::string, int> ao_png(const ao_readback& ao, const reference& r, const display_grid& g)
+{
+    if (g.factor == 1) return {encode_png(ao.width, ao.height, 1, ao.unorm), ao.factor};
+    return {encode_png(g.width, g.height, 1, block_means(ao.full(r.width, r.height), r.valid, r.width, g)), 1};
 }
 
 // The median over the scenes of each pass's median time.
@@ -91,22 +141,26 @@ inline std::string page_data(const report_data& d)
     j["scenes"] = nlohmann::json::array();
     j["images"]["reference"] = nlohmann::json::array();
     for (const scene_record& s : d.scenes) {
-        j["scenes"].push_back({{"name", s.scene.name}, {"width", s.truth.width}, {"height", s.truth.height}});
-        j["images"]["reference"].push_back(png_uri(reference_png(s.truth)));
+        const display_grid g(s.truth.width, s.truth.height);
+        j["scenes"].push_back({{"name", s.scene.name}, {"width", g.width}, {"height", g.height}});
+        j["images"]["reference"].push_back(png_uri(reference_png(s.truth, g)));
     }
     j["variants"] = nlohmann::json::array();
     j["images"]["ao"] = nlohmann::json::array();
     for (const variant_record& v : d.variants) {
         nlohmann::json runs = nlohmann::json::array(), images = nlohmann::json::array();
-        for (const run_record& r : v.runs) {
+        for (size_t s = 0; s < v.runs.size(); ++s) {
+            const run_record& r = v.runs[s];
             if (!r.ran()) {
                 runs.push_back({{"skipped", r.skipped}});
                 images.push_back(nullptr);
                 continue;
             }
+            const reference& truth = d.scenes[s].truth;
+            const auto [png, factor] = ao_png(r.ao, truth, display_grid(truth.width, truth.height));
             runs.push_back({{"ms", number(r.ms.median)}, {"rmse", number(r.plain.rmse)}, {"rmse_calibrated", number(r.calibrated.rmse)},
-                            {"power", number(r.power)}, {"factor", r.ao.factor}});
-            images.push_back(png_uri(encode_png(r.ao.width, r.ao.height, 1, r.ao.unorm)));
+                            {"power", number(r.power)}, {"factor", factor}});
+            images.push_back(png_uri(png));
         }
         nlohmann::json pass_ms = nlohmann::json::array();
         for (double ms : pass_medians(v)) pass_ms.push_back(number(ms));

@@ -25,6 +25,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 namespace {
@@ -296,6 +297,42 @@ TEST_CASE("page: selecting a row draws reference, variant and error on every sce
     const aogen_report::rgb blue = aogen_report::background_colour;
     for (const json& p : bg) CHECK(p == json::array({blue[0], blue[1], blue[2], 255}));
     CHECK(b.errors().empty());
+}
+
+TEST_CASE("page: a scene wider than the page's images is shown box-filtered down by a whole factor")
+{
+    // 1000 × 6 at most 480 wide: a factor of 3, shown 334 × 2; each shown pixel the mean of
+    // its 3 × 3 block's valid pixels (column 0 is background).
+    aogen_report::report_data d = small_report();
+    d.scenes = {scene_of("wide", 1000, 6)};
+    for (aogen_report::variant_record& v : d.variants) {
+        v.runs.resize(1);
+        aogen_report::ao_readback& ao = v.runs[0].ao;
+        ao.width = 1000 / ao.factor, ao.height = 6 / ao.factor;
+        ao.unorm.clear();
+        for (int i = 0; i < ao.width * ao.height; ++i) ao.unorm.push_back(uint8_t(i * 7 % 256));
+    }
+    const auto block_mean = [&](int x, int y, const std::function<double(int, int)>& at) {
+        double sum = 0;
+        int count = 0;
+        for (int sy = 3 * y; sy < 3 * y + 3; ++sy)
+            for (int sx = std::max(1, 3 * x); sx < 3 * x + 3; ++sx) sum += at(sx, sy), ++count;
+        return int(std::lround(sum / count * 255));
+    };
+    const aogen_report::ao_readback& half = d.variants[1].runs[0].ao; // 500 × 3, nearest-upsampled
+    const int reference = block_mean(200, 1, [](int sx, int) { return sx / 1000.0; });
+    const int ao = block_mean(200, 1, [&](int sx, int sy) { return half.unorm[size_t(sy / 2) * 500 + sx / 2] / 255.0; });
+    opened_page page(aogen_report::report_page(d, {"aogen_report", true}));
+    click_on(page.b, "#variant-table tbody tr[data-variant=\"1\"] td.name");
+    CHECK(page.b.evaluate("new Promise(r => { const t = setInterval(() => { if (document.getElementById('strip-rows').dataset.variant === '1') "
+                          "{ clearInterval(t); r(true); } }, 20); })") == true);
+    const json canvases = page.b.evaluate("Array.from(document.querySelectorAll('#strip-rows canvas')).map(c => "
+                                          "[c.width, c.height, Array.from(c.getContext('2d').getImageData(200, 1, 1, 1).data)])");
+    REQUIRE(canvases.size() == 3);
+    for (const json& c : canvases) CHECK((c[0] == 334 && c[1] == 2));
+    CHECK(canvases[0][2] == json::array({reference, reference, reference, 255}));
+    CHECK(canvases[1][2] == json::array({ao, ao, ao, 255}));
+    CHECK(page.b.errors().empty());
 }
 
 TEST_CASE("page: user text is shown as text, never run")
