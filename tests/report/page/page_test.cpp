@@ -206,7 +206,7 @@ TEST_CASE("page: report.html has no console error and one marker per timed varia
         }
 }
 
-TEST_CASE("page: hovering a marker names its variant, leaving it hides the name")
+TEST_CASE("page: hovering or focusing a marker names its variant, leaving it hides the name")
 {
     opened_report page;
     aogen_test::browser& b = page.b;
@@ -220,6 +220,13 @@ TEST_CASE("page: hovering a marker names its variant, leaving it hides the name"
             b.mouse_move(2, 2);
             CHECK(b.evaluate("document.getElementById('tooltip').hidden") == true);
         }
+    // From the keyboard: a marker that takes the focus is named too, and Enter selects it.
+    b.evaluate("document.querySelector('#plot .point[data-variant=\"2\"]').focus()");
+    CHECK(b.evaluate("document.querySelector('#tooltip .name').textContent") == made[2].name);
+    b.call("Input.dispatchKeyEvent", {{"type", "keyDown"}, {"key", "Enter"}, {"code", "Enter"}, {"windowsVirtualKeyCode", 13}});
+    CHECK(b.evaluate("document.querySelector('#variant-table tr[aria-selected=\"true\"]').dataset.variant") == "2");
+    b.evaluate("document.activeElement.blur()");
+    CHECK(b.evaluate("document.getElementById('tooltip').hidden") == true);
     CHECK(b.errors().empty());
 }
 
