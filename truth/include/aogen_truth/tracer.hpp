@@ -13,7 +13,8 @@
 //                           recomputed in double on the primitive Embree found.
 //   scene::ao(p, n, opts)   AO(p) = (1/π) ∫ V_R(p, ω) (n·ω) dω over the hemisphere of n:
 //                           binary visibility of geometry within world radius R, cosine-
-//                           weighted, no falloff (DESIGN.md, "Ground truth and oracles").
+//                           weighted, no falloff (DESIGN.md, "Ground truth and oracles");
+//                           with the bent normal, the same rays' mean unoccluded direction.
 //   surface_offset(q, R)    how far ao() lifts its rays' origin off the surface by default.
 //   reliable_extent(R)      how far from the origin a point may be for that lift to be reliable.
 //
@@ -130,6 +131,11 @@ struct estimate {
     double standard_error = 0;   // stratified, collapsed-strata estimate
     double binomial_bound = 0;   // √(a(1−a)/N), an upper bound for stratified sampling
     int rays = 0;
+    // The bent normal: the cosine-weighted mean of the unoccluded directions,
+    // ∫ V_R(p, ω) ω (n·ω) dω normalised — the direction light arrives from on average. The
+    // rays are cosine-distributed, so it is the plain mean of the rays that escape. Unit
+    // length; n itself when every ray is occluded (no direction to prefer).
+    vec3 bent_normal{0, 0, 1};
 };
 
 // The default lift of ao()'s ray origin off the surface at `relative_point` (p − the tracer's
@@ -303,6 +309,7 @@ public:
         const int m = opts.grid;
         const int count = m * m;
         int visible = 0;
+        vec3 escaped{0, 0, 0}; // Σ of the unoccluded directions
         double pair_sq = 0;  // Σ over stratum pairs (y_a − y_b)²
         for (int i = 0; i < m; ++i) {
             int previous = 0;
@@ -315,6 +322,7 @@ public:
                 const vec3 d = (r * cs.c) * f.t + (r * cs.s) * f.b + z * f.n;
                 const int y = occluded_relative(o, d, 0.0, opts.radius) ? 0 : 1;
                 visible += y;
+                if (y) escaped = escaped + d;
                 if (j % 2 == 1) pair_sq += double((y - previous) * (y - previous));
                 previous = y;
             }
@@ -324,6 +332,7 @@ public:
         e.value = double(visible) / count;
         e.standard_error = std::sqrt(pair_sq) / count;
         e.binomial_bound = std::sqrt(e.value * (1 - e.value) / count);
+        e.bent_normal = visible > 0 ? normalize(escaped) : f.n;
         return e;
     }
 
