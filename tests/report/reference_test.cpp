@@ -165,6 +165,39 @@ TEST_CASE("reference: every pixel of the groove's tilted walls is 1/2 with an un
     check_every_pixel(s, half_except_at_the_crease(s));
 }
 
+TEST_CASE("reference: every pixel of the crease and the groove has its closed-form bent normal")
+{
+    // A pixel on one of two perpendicular planes facing each other sees the wedge away from the
+    // other: its bent normal is normalise(π/3 · n + 2/3 · m), n its plane's normal and m the
+X
+    const std::string name = GENERATE("crease", "groove");
+    const double distance = GENERATE(from_range(distances_from_zero));
+    scene s = moved(aogen::scenes::builtin_scene(name), distance);
+    s.camera.width = 48, s.camera.height = 27;
+    const auto t = aogen::scenes::make_tracer(s);
+    aogen::scenes::gbuffer_options world;
+    world.use_scene_normals = false;
+    world.normals = aogen::scenes::normal_space::world;
+    const gbuffer g = aogen::scenes::render_gbuffer(s, *t, world);
+    const aogen_report::reference r = aogen_report::trace_reference(*t, g, unbounded, 32, 2);
+    const closed_form away_from_crease = half_except_at_the_crease(s);
+    int checked = 0;
+    for (size_t i = 0; i < r.ao.size(); ++i) {
+        if (!r.valid[i] || std::isnan(away_from_crease(g, i))) continue;
+        const auto &n = s.planes.at(size_t(g.geometry[i])).normal, &m = s.planes.at(size_t(1 - g.geometry[i])).normal;
+        const double k = 3.14159265358979323846 / 3, l = 2.0 / 3;
+        const vec3 want{k * n.x + l * m.x, k * n.y + l * m.y, k * n.z + l * m.z};
+        const double length = std::sqrt(want.x * want.x + want.y * want.y + want.z * want.z);
+        const double cosine = (r.bent_normal[3 * i] * want.x + r.bent_normal[3 * i + 1] * want.y + r.bent_normal[3 * i + 2] * want.z) / length;
+        INFO(name << " " << distance << " from zero, pixel " << i % 48 << "," << i / 48);
+        CHECK(std::acos(std::min(1.0, cosine)) * 180 / 3.14159265358979323846 <= 1.0);
+        ++checked;
+    }
+    CHECK(checked > 48 * 27 / 2);
+    for (size_t i = 0; i < r.ao.size(); ++i)
+        if (!r.valid[i]) CHECK(std::isnan(r.bent_normal[3 * i]));
+}
+
 TEST_CASE("reference: every pixel by a wall of height H is its closed form")
 {
     // 64×64 rays: the wall's closed form has no stratum-aligned boundary, and at 32×32 a

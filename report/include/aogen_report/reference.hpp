@@ -32,6 +32,7 @@ struct reference {
     int width = 0, height = 0;
     std::vector<float> ao;             // NaN on background and where it cannot be trusted
     std::vector<float> standard_error; // 0 there
+    std::vector<float> bent_normal;    // 3 per pixel, world space, unit: the true bent normal (tracer.hpp); NaN where ao is
     std::vector<uint8_t> valid;        // 1 where a surface was hit and its reference can be trusted: the pixels scored
     std::vector<uint8_t> hit;          // 1 where a surface was hit (0: background, which a shader must leave at 1)
     size_t untrusted = 0;              // hits left out: farther from the camera than truth::reliable_extent(radius)
@@ -60,6 +61,7 @@ inline reference trace_reference(const aogen::truth::scene& t, const aogen::scen
     r.width = g.width, r.height = g.height;
     r.ao.assign(n, std::nanf(""));
     r.standard_error.assign(n, 0.0f);
+    r.bent_normal.assign(3 * n, std::nanf(""));
     r.hit = g.hit;
     r.valid = g.hit;
     r.rays_per_pixel = grid * grid;
@@ -86,6 +88,7 @@ inline reference trace_reference(const aogen::truth::scene& t, const aogen::scen
             const aogen::truth::estimate e = t.ao(p, normal, o);
             r.ao[i] = float(e.value);
             r.standard_error[i] = float(e.standard_error);
+            r.bent_normal[3 * i] = float(e.bent_normal.x), r.bent_normal[3 * i + 1] = float(e.bent_normal.y), r.bent_normal[3 * i + 2] = float(e.bent_normal.z);
         },
         threads);
 
@@ -116,7 +119,10 @@ inline reference trace_reference(const aogen::scenes::scene& s, const aogen::tru
         aogen::scenes::make_tracer_at(s, {0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 0.5 * (lo.z + hi.z)});
     const reference second = trace_reference(*centred, rest, s.ao_radius, grid, threads);
     for (size_t i = 0; i < r.valid.size(); ++i)
-        if (second.valid[i]) r.ao[i] = second.ao[i], r.standard_error[i] = second.standard_error[i], r.valid[i] = 1, --r.untrusted;
+        if (second.valid[i]) {
+            r.ao[i] = second.ao[i], r.standard_error[i] = second.standard_error[i], r.valid[i] = 1, --r.untrusted;
+            std::copy_n(&second.bent_normal[3 * i], 3, &r.bent_normal[3 * i]);
+        }
     detail::finish(r);
     return r;
 }
