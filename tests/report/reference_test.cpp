@@ -119,15 +119,26 @@ closed_form everywhere(double value)
 
 // Every valid pixel of the reference of `s` at 48×27 with grid × grid rays within 0.005 of
 // the closed form, more than half of them checked.
-void check_every_pixel(scene s, const closed_form& expected, double radius = unbounded, int grid = 32)
+// The G-buffer (world normals) of `s` at 48×27 and its reference with grid × grid rays.
+struct traced {
+    gbuffer g;
+    aogen_report::reference r;
+};
+traced trace_at_48x27(scene s, double radius, int grid)
 {
     s.camera.width = 48, s.camera.height = 27;
     const auto t = aogen::scenes::make_tracer(s);
     aogen::scenes::gbuffer_options world;
     world.use_scene_normals = false;
     world.normals = aogen::scenes::normal_space::world;
-    const gbuffer g = aogen::scenes::render_gbuffer(s, *t, world);
-    const aogen_report::reference r = aogen_report::trace_reference(*t, g, radius, grid, 2);
+    gbuffer g = aogen::scenes::render_gbuffer(s, *t, world);
+    aogen_report::reference r = aogen_report::trace_reference(*t, g, radius, grid, 2);
+    return {std::move(g), std::move(r)};
+}
+
+void check_every_pixel(scene s, const closed_form& expected, double radius = unbounded, int grid = 32)
+{
+    const auto [g, r] = trace_at_48x27(s, radius, grid);
     int checked = 0;
     double sum = 0, expected_sum = 0;
     for (size_t i = 0; i < r.ao.size(); ++i) {
@@ -169,17 +180,12 @@ TEST_CASE("reference: every pixel of the crease and the groove has its closed-fo
 {
     // A pixel on one of two perpendicular planes facing each other sees the wedge away from the
     // other: its bent normal is normalise(π/3 · n + 2/3 · m), n its plane's normal and m the
-X
+    // other's (32.5° from n; truth's closed forms, tests/truth). Within 1° at 32 × 32 rays (measured
+    // at most 0.39° over the 7737 pixels checked, 2026-12-05).
     const std::string name = GENERATE("crease", "groove");
     const double distance = GENERATE(from_range(distances_from_zero));
-    scene s = moved(aogen::scenes::builtin_scene(name), distance);
-    s.camera.width = 48, s.camera.height = 27;
-    const auto t = aogen::scenes::make_tracer(s);
-    aogen::scenes::gbuffer_options world;
-    world.use_scene_normals = false;
-    world.normals = aogen::scenes::normal_space::world;
-    const gbuffer g = aogen::scenes::render_gbuffer(s, *t, world);
-    const aogen_report::reference r = aogen_report::trace_reference(*t, g, unbounded, 32, 2);
+    const scene s = moved(aogen::scenes::builtin_scene(name), distance);
+    const auto [g, r] = trace_at_48x27(s, unbounded, 32);
     const closed_form away_from_crease = half_except_at_the_crease(s);
     int checked = 0;
     for (size_t i = 0; i < r.ao.size(); ++i) {
