@@ -12,7 +12,7 @@
 #   errors  bad arguments: one line on stderr naming what is wrong, non-zero exit,
 #           nothing written.
 #   suite   the stability suite, every built-in case on every default variant, with
-#           --check: it passes, its results hold the four defects issue 11 found fixed
+#           --check: it passes (its report.html opened in chromium too), its results hold the four defects issue 11 found fixed
 #           (absolute figures, which the old shaders miss), and a planted failing case
 #           file makes --check exit 1 and the report name it.
 #   tune    aogen_tune's smallest search: the settings it evaluates, its JSON and table.
@@ -185,6 +185,8 @@ assert float(re.search(r"\(([0-9.e+]+)\)", cases["radius_huge"]["about"]).group(
 PY
   grep -q "| 31 | scale_invariance |" "$work/s/report.md" || fail "report.md lacks the case table"
   grep -q '<td class="num">31</td><td>scale_invariance</td>' "$work/s/report.html" || fail "report.html lacks the case table"
+  AOGEN_PAGE="$work/s/report.html" "$page_tests" "page: a stability suite page made by aogen_report" >"$work/page" 2>&1 ||
+    { fail "the suite's report.html in chromium"; tail -30 "$work/page"; }
   grep -q "^None\.$" "$work/s/report.md" || fail "report.md lists failures"
   # A planted failure: a criterion no variant can meet (RMSE <= 0) fails --check, named.
   cat >"$work/impossible.json" <<'JSON'
@@ -199,6 +201,8 @@ JSON
     --out "$work/f" 2>"$work/stderr" && fail "--check exited 0 with a failing case"
   grep -q "stability suite: 1 run failed" "$work/stderr" || { fail "--check's message:"; cat "$work/stderr"; }
   grep -q "impossible.*gtao-1x2-half-noblur" "$work/f/report.md" || fail "report.md does not name the failing case and variant"
+  AOGEN_PAGE="$work/f/report.html" "$page_tests" "page: a stability suite page made by aogen_report" >"$work/page" 2>&1 ||
+    { fail "the failing suite's report.html in chromium"; tail -30 "$work/page"; }
   "$report" --suite stability --cases "$work/impossible.json" --variants gtao-1x2-half-noblur-gbufworld-std-persp-cs --out "$work/g" 2>/dev/null ||
     fail "without --check a failing case must not fail the run"
   ;;

@@ -414,6 +414,24 @@ TEST_CASE("page: a report made by aogen_report", "[.]")
     CHECK(b.errors().empty());
 }
 
+// A stability suite's page aogen_report made (report_test.sh's suite case): no console error,
+// a grid row per variant and a cell per case, as many failed cells as results.json's failures.
+TEST_CASE("page: a stability suite page made by aogen_report", "[.]")
+{
+    const char* page = std::getenv("AOGEN_PAGE");
+    REQUIRE(page != nullptr); // set by report_test.sh; never a silent pass
+    const json results = json::parse(aogen::tools::read_file((fs::path(page).parent_path() / "results.json").string()));
+    REQUIRE(!results["cases"].empty());
+    aogen_test::browser b(chromium());
+    b.open("file://" + fs::absolute(page).string());
+    CHECK(b.errors().empty());
+    const size_t variants = results["cases"][0]["runs"].size(), cases = results["cases"].size();
+    CHECK(b.evaluate("document.querySelectorAll('.suite-grid tbody tr').length") == variants);
+    CHECK(b.evaluate("document.querySelectorAll('.suite-grid tbody td.pass, .suite-grid tbody td.fail, .suite-grid tbody td.skip').length") ==
+          variants * cases);
+    CHECK(b.evaluate("document.querySelectorAll('.suite-grid tbody td.fail').length") == results["failures"]);
+}
+
 // docs/report_page.png: a real report at 1280 × 800 with the fastest Pareto variant selected
 // and a marker hovered (AOGEN_PAGE: its report.html, AOGEN_PAGE_SCREENSHOT: the PNG to write).
 TEST_CASE("page: screenshot", "[.]")
