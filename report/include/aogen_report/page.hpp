@@ -140,8 +140,9 @@ inline std::string page_data(const report_data& d)
     nlohmann::json j;
     j["scenes"] = nlohmann::json::array();
     j["images"]["reference"] = nlohmann::json::array();
+    std::vector<display_grid> grids; // per scene
     for (const scene_record& s : d.scenes) {
-        const display_grid g(s.truth.width, s.truth.height);
+        const display_grid& g = grids.emplace_back(s.truth.width, s.truth.height);
         j["scenes"].push_back({{"name", s.scene.name}, {"width", g.width}, {"height", g.height}});
         j["images"]["reference"].push_back(png_uri(reference_png(s.truth, g)));
     }
@@ -156,8 +157,7 @@ inline std::string page_data(const report_data& d)
                 images.push_back(nullptr);
                 continue;
             }
-            const reference& truth = d.scenes[s].truth;
-            const auto [png, factor] = ao_png(r.ao, truth, display_grid(truth.width, truth.height));
+            const auto [png, factor] = ao_png(r.ao, d.scenes[s].truth, grids[s]);
             runs.push_back({{"ms", number(r.ms.median)}, {"rmse", number(r.plain.rmse)}, {"rmse_calibrated", number(r.calibrated.rmse)},
                             {"power", number(r.power)}, {"factor", factor}});
             images.push_back(png_uri(png));
@@ -172,7 +172,9 @@ inline std::string page_data(const report_data& d)
     std::string text = j.dump();
     std::string safe; // no "<" at all: nothing inside can close the <script> element
     safe.reserve(text.size());
-    for (char c : text) safe += c == '<' ? std::string("\\u003c") : std::string(1, c);
+    for (char c : text)
+        if (c == '<') safe += "\\u003c";
+        else safe += c;
     return safe;
 }
 
