@@ -1,7 +1,7 @@
 // aogen_report — how far each AO variant is from the ray-traced truth, and what it costs.
 //
 //     aogen_report [--scenes crease,room,my_scene.json] [--variants spec.json | NAME,NAME]
-//                  [--size 320x180] [--rays 4096] [--rounds 3] [--iterations 20] [--budget-ms 1000] [--warmup-ms 200]
+//                  [--size 320x180] [--rays 4096] [--frames 8] [--rounds 3] [--iterations 20] [--budget-ms 1000] [--warmup-ms 200]
 //                  [--device NAME] [--out out/report]
 //
 // Writes into --out: report.html (the whole report as one self-contained page: the plot,
@@ -111,7 +111,7 @@ void add_report(aogen::tools::file_set& set, const aogen_report::report_data& d,
     set.add("results.json", aogen_report::results_json(d, meta));
     set.add("report.md", aogen_report::report_markdown(d, meta, strips));
     set.add("report.html", aogen_report::report_page(d, meta));
-    set.add("error_vs_time.svg", aogen_report::error_time_svg(aogen_report::plot_points(d), aogen_report::plot_title(d)));
+    set.add("error_vs_time.svg", aogen_report::error_time_svg(aogen_report::plot_points(d), aogen_report::plot_title(d), d.frames));
 }
 
 // Built-in case names or case JSON files; empty: every built-in case.
@@ -156,6 +156,7 @@ int main(int argc, char** argv)
     CLI::App app{"aogen_report: each AO variant's error against ray-traced ground truth, and its run time"};
     std::string scenes, variants, size = "320x180", out = "out/report", device;
     int rays = 4096;
+    int frames = aogen_report::report_settings{}.frames;
     aogen::vulkan::timing_options timing = aogen_report::report_settings{}.timing;
     bool validation = false, no_saving = false, no_floor = false;
     app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)")
@@ -165,6 +166,8 @@ int main(int argc, char** argv)
     app.add_option("--size", size, "every scene's resolution, WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--rays", rays, "reference rays per pixel: the square of an even number >= 32")->capture_default_str()
         ->check(aogen::tools::integer_in(1, 65536)); // grid_for_rays says which counts work
+    app.add_option("--frames", frames, "frames averaged for the error after a temporal accumulation (a still camera, their plain mean; 1: none)")
+        ->capture_default_str()->check(aogen::tools::integer_in(aogen_report::report_settings::frames_range.lo, aogen_report::report_settings::frames_range.hi));
     app.add_option("--rounds", timing.rounds, "timing rounds per scene: every chain's iterations, interleaved, in one submission")
         ->capture_default_str()->check(aogen::tools::integer_in(1, 1000));
     app.add_option("--iterations", timing.iterations, "back-to-back iterations of every chain in each round (the most, under --budget-ms)")
@@ -204,7 +207,7 @@ int main(int argc, char** argv)
     for (int i = 0; i < argc; ++i) command << (i ? " " : "") << (i ? argv[i] : "aogen_report");
     try {
         // Options that belong to the other mode are refused, not ignored.
-        const std::vector<std::string> report_only{"--scenes", "--size", "--rounds", "--iterations", "--budget-ms", "--warmup-ms",
+        const std::vector<std::string> report_only{"--scenes", "--size", "--frames", "--rounds", "--iterations", "--budget-ms", "--warmup-ms",
                                                    "--no-feature-saving", "--no-fetch-floor"};
         for (const std::string& o : report_only)
             if (!suite.empty() && app.count(o) > 0)
@@ -217,6 +220,7 @@ int main(int argc, char** argv)
         aogen_report::report_settings s;
         parse_size(size, s.width, s.height);
         s.grid = grid_for_rays(rays);
+        s.frames = frames;
         s.timing = timing;
         s.device.name = device, s.device.validation = validation;
         s.feature_saving = !no_saving;

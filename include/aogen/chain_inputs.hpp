@@ -5,8 +5,8 @@
 //   The data every runner of a chain uploads, with no API in it: aogen::vulkan's harness and
 //   aogen::gl's runner read the same bytes, so their outputs can be compared pixel for pixel.
 //     gbuffer         raw depth and normals as floats, row-major, top row first
-//     chain_settings  the run-time settings of every pass (params.hpp's ao_settings) and
-//                     the camera
+//     chain_settings  the run-time settings of every pass (params.hpp's ao_settings), the
+//                     camera and the frame index (temporal.hpp: 0, a still frame, unless set)
 //     inputs_for(v, settings, target_w, target_h)
 //                     the std140 uniform block of each pass of `v`, the noise tile the
 //                     params name (4 × 4 for GTAO, VBAO and SAO) and, for SSAO, its kernel
@@ -21,6 +21,7 @@
 
 #include "kernel.hpp"
 #include "noise.hpp"
+#include "temporal.hpp"
 #include "uniforms.hpp"
 #include "variant.hpp"
 
@@ -44,9 +45,13 @@ struct chain_inputs {
 };
 
 // What a chain of any variant reads at run time: the settings of each pass (a variant reads
-// its technique's and its blur's) and the camera.
+// its technique's and its blur's), the camera, and which frame of a temporal accumulation
+// this is (temporal.hpp; frame 0 is the single-frame output) and the sequence its frames
+// turn the noise by (van der Corput, measured best; the others for comparison).
 struct chain_settings : ao_settings {
     uniforms::camera camera;
+    uint32_t frame = 0;
+    temporal::sequence frame_sequence = temporal::sequence::van_der_corput;
 };
 
 // `settings` seen through `camera`.
@@ -80,7 +85,8 @@ inline int output_scale(const variant& v)
 }
 
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
-// target_w × target_h: each pass's std140 uniform block, the noise tile the params name
+// target_w × target_h: each pass's std140 uniform block (the AO pass's with frame s.frame's
+// rotation of the noise), the noise tile the params name
 // (4×4 for GTAO, VBAO and SAO) and, for SSAO, the kernel inside its block (SAO's spiral
 // is inside its own).
 inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
@@ -91,14 +97,15 @@ inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int ta
     in.noise_size = v.tech == technique::ssao ? ssao.noise_size : 4;
     in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
     const vec2 tsize{float(target_w), float(target_h)};
+    const vec2 turn = temporal::frame_rotation(v, s.frame, s.frame_sequence);
     for (pass_kind pass : passes(v)) {
         if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules));
-        else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size));
-        else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size));
-        else if (v.tech == technique::sao) in.uniforms.push_back(uniforms::pack_sao(s.sao, s.camera, v.ssao_samples, tsize, rules, in.noise_size));
+        else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size, turn));
+        else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size, turn));
+        else if (v.tech == technique::sao) in.uniforms.push_back(uniforms::pack_sao(s.sao, s.camera, v.ssao_samples, tsize, rules, in.noise_size, turn));
         else {
             const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), v.ssao_samples, ssao.kernel_seed);
-            in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules));
+            in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules, turn));
         }
     }
     return in;

@@ -2,8 +2,9 @@
 //
 // Each pass reads its settings and camera from one uniform block. This header holds
 // the blocks' descriptions (for layout.hpp and declare.hpp) and packs a pass's params
-// (params.hpp), camera and kernel into the block's bytes under any rule set, so the
-// same numbers reach a Vulkan std140 buffer, a D3D cbuffer or a WebGPU uniform:
+// (params.hpp), camera, kernel and frame rotation (temporal.hpp) into the block's bytes
+// under any rule set, so the same numbers reach a Vulkan std140 buffer, a D3D cbuffer or a
+// WebGPU uniform:
 //
 //     aogen::uniforms::camera cam{world_to_view, aogen::perspective(0.577f, 16 / 9.f, 0.1f, 100)};
 //     auto kernel = aogen::kernel::crytek(16, 1);
@@ -39,13 +40,19 @@ struct camera {
     mat4 proj; // view → clip, see math.hpp for the conventions
 };
 
-// Members every pass block starts with: the projection both ways, the normal
-// transform, and the sizes that map a pixel to the noise tile and to uv.
+// The rotation of a still frame, frame 0 (temporal.hpp): every pack_* below takes it unless
+// given another frame's.
+inline constexpr vec2 still_frame{1.0f, 0.0f};
+
+// Members every AO pass block starts with: the projection both ways, the normal
+// transform, the sizes that map a pixel to the noise tile and to uv, and this frame's turn
+// of the noise (temporal::frame_rotation; (1, 0) at frame 0).
 inline std::vector<layout::member_desc> camera_members()
 {
-    return {{"proj", "mat4"},         {"inv_proj", "mat4"},   {"world_to_view", "mat4"},
-            {"noise_scale", "vec2"}, // AO target size / noise tile size
-            {"texel_size", "vec2"}}; // 1 / AO target size
+    return {{"proj", "mat4"},          {"inv_proj", "mat4"},   {"world_to_view", "mat4"},
+            {"noise_scale", "vec2"},   // AO target size / noise tile size
+            {"texel_size", "vec2"},    // 1 / AO target size
+            {"frame_rotation", "vec2"}}; // (cos, sin) of this frame's turn of the noise
 }
 
 inline layout::block_desc ssao_block(int samples)
@@ -103,7 +110,7 @@ inline layout::block_desc pointcloud_block()
 
 namespace detail {
 
-inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, int noise_size)
+inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, int noise_size, vec2 frame_rotation)
 {
     require_finite_above("uniforms target width", target_size.x, 0, 65536);
     require_finite_above("uniforms target height", target_size.y, 0, 65536);
@@ -112,22 +119,23 @@ inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, i
     w.set("world_to_view", cam.world_to_view);
     w.set("noise_scale", vec2{target_size.x / noise_size, target_size.y / noise_size});
     w.set("texel_size", vec2{1.0f / target_size.x, 1.0f / target_size.y});
+    w.set("frame_rotation", frame_rotation);
 }
 
 } // namespace detail
 
 // SsaoUniforms bytes. `kernel` holds the variant's samples (its size is the block's N, in
 // variant::ssao_samples_range); `target_size` is the AO target's size in pixels (half the
-// screen at half resolution).
+// screen at half resolution); `frame_rotation` is temporal::frame_rotation's for the frame.
 inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, const std::vector<vec4>& kernel,
-                                      vec2 target_size, layout::rules rules)
+                                      vec2 target_size, layout::rules rules, vec2 frame_rotation = still_frame)
 {
     validate(p);
     const int_range n = variant::ssao_samples_range;
     if (kernel.size() < size_t(n.lo) || kernel.size() > size_t(n.hi))
         fail("ssao kernel", std::to_string(kernel.size()) + " samples given", "valid: " + to_string(n) + " samples, the variant's ssao_samples");
     layout::writer w(layout::compute(ssao_block(int(kernel.size())), rules));
-    detail::set_camera(w, cam, target_size, p.noise_size);
+    detail::set_camera(w, cam, target_size, p.noise_size, frame_rotation);
     w.set("radius", p.radius);
     w.set("bias", p.bias);
     w.set("strength", p.strength);
@@ -140,11 +148,11 @@ inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, c
 // SaoUniforms bytes for a spiral of `taps` (the variant's ssao_samples); SAO's noise is a
 // rotation per pixel, like GTAO's.
 inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int taps, vec2 target_size, layout::rules rules,
-                                     int noise_size = 4)
+                                     int noise_size = 4, vec2 frame_rotation = still_frame)
 {
     validate(p);
     layout::writer w(layout::compute(sao_block(taps), rules));
-    detail::set_camera(w, cam, target_size, noise_size);
+    detail::set_camera(w, cam, target_size, noise_size, frame_rotation);
     w.set("radius", p.radius);
     w.set("bias", p.bias);
     w.set("intensity", p.intensity);
@@ -155,11 +163,11 @@ inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int
 
 // GtaoUniforms bytes; GTAO uses no noise tile of its own beyond a 4×4 rotation.
 inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
-                                      int noise_size = 4)
+                                      int noise_size = 4, vec2 frame_rotation = still_frame)
 {
     validate(p);
     layout::writer w(layout::compute(gtao_block(), rules));
-    detail::set_camera(w, cam, target_size, noise_size);
+    detail::set_camera(w, cam, target_size, noise_size, frame_rotation);
     w.set("radius", p.radius);
     w.set("thickness_bias", p.thickness_bias);
     w.set("strength", p.strength);
@@ -170,11 +178,11 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
 
 // VbaoUniforms bytes; like GTAO, a 4×4 rotation tile unless told.
 inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
-                                      int noise_size = 4)
+                                      int noise_size = 4, vec2 frame_rotation = still_frame)
 {
     validate(p);
     layout::writer w(layout::compute(vbao_block(), rules));
-    detail::set_camera(w, cam, target_size, noise_size);
+    detail::set_camera(w, cam, target_size, noise_size, frame_rotation);
     w.set("radius", p.radius);
     w.set("thickness", p.thickness * p.radius); // at most 1e8: finite
     w.set("strength", p.strength);

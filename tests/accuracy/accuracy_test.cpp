@@ -18,12 +18,9 @@
 //   - on the floor to the horizon the truth is 1 at every pixel: every pixel within 1/255.
 // The planted faults these tests must catch are in tests/mutants/mutants.json
 // (`ctest -L mutants`).
-#include "vulkan/harness.hpp"
+#include "accuracy/truth_scenes.hpp"
 
 #include <aogen_report/metrics.hpp>
-#include <aogen_report/reference.hpp>
-#include <aogen_report/settings.hpp>
-#include <aogen_scenes/gbuffer.hpp>
 
 #include <iostream>
 #include <map>
@@ -32,48 +29,6 @@ using namespace aogen;
 using namespace aogen_test;
 
 namespace {
-
-constexpr int width = 160, height = 90; // half resolution: 80 × 45
-constexpr int reference_grid = 24;      // 576 rays a pixel: a standard error of about 0.02 a pixel, 1e-4 on a mean
-
-// A built-in scene at width × height with its G-buffer tracer and reference image.
-struct truth_scene {
-    scenes::scene scene;
-    std::unique_ptr<truth::scene> tracer;
-    aogen_report::reference truth;
-};
-
-const truth_scene& truth_of(const std::string& name)
-{
-    static std::map<std::string, truth_scene> cache;
-    auto found = cache.find(name);
-    if (found != cache.end()) return found->second;
-    truth_scene t;
-    t.scene = scenes::builtin_scene(name);
-    t.scene.camera.width = width, t.scene.camera.height = height;
-    t.tracer = scenes::make_tracer(t.scene);
-    scenes::gbuffer_options world;
-    world.use_scene_normals = false;
-    world.normals = scenes::normal_space::world;
-    t.truth = aogen_report::trace_reference(*t.tracer, scenes::render_gbuffer(t.scene, *t.tracer, world), t.scene.ao_radius, reference_grid);
-    return cache.emplace(name, std::move(t)).first->second;
-}
-
-// `v` on scene `t` as the report runs it (its G-buffer, default settings), at full resolution.
-// `v`'s AO on `t`, run with the report's default settings of `settings_of` (v itself unless
-// given: the smooth decisions' tuned values for a -step variant, say).
-std::vector<float> ao_of(vulkan::context& ctx, const variant& v, const truth_scene& t, const variant* settings_of = nullptr)
-{
-    scenes::gbuffer_options go;
-    go.use_scene_normals = false;
-    go.face_camera = false;
-    go.normals = v.normals == normal_source::gbuffer_view ? scenes::normal_space::view : scenes::normal_space::world;
-    const vulkan::gbuffer g = scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(t.scene, v), *t.tracer, go));
-    const vulkan::chain_result r = chain_under_test(ctx, v).run(g, aogen_report::default_settings(settings_of ? *settings_of : v, t.scene));
-    REQUIRE(r.width == width); // every variant here ends at full resolution (the upsample, or full)
-    REQUIRE(r.height == height);
-    return r.ao;
-}
 
 // mean(1 - ao) / mean(1 - truth) over the pixels with geometry.
 double occlusion_ratio(const std::vector<float>& ao, const aogen_report::reference& truth)

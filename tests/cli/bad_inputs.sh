@@ -744,6 +744,12 @@ group_report() {
   expect_fail -x 2 -m '--frob' -- "${rep[@]}" --scenes crease --frob --out out
   new_case parse-error-rounds-out-of-range
   expect_fail -x 2 -m '--rounds' -m '1\.\.1000|1 to 1000|1 - 1000' -- "$report" --variants $gtao --scenes crease "${tiny[@]}" --rounds 0 --iterations 1 --warmup-ms 0 --out out
+  new_case frames-zero # the frames averaged for the accumulated error: 1..1024, named with what is valid
+  expect_fail -x 2 -m '--frames' -m '1\.\.1024|1 to 1024|1 - 1024' -- "${rep[@]}" --scenes crease --frames 0 --out out
+  new_case frames-too-many
+  expect_fail -x 2 -m '--frames' -m '1\.\.1024|1 to 1024|1 - 1024' -- "${rep[@]}" --scenes crease --frames 1025 --out out
+  new_case frames-with-the-suite # the suite scores one frame: --frames is the report's option
+  expect_fail -m '--frames' -m 'suite' -- "$report" --suite stability --frames 4 --out out
   new_case parse-error-budget-negative
   expect_fail -x 2 -m '--budget-ms' -- "${rep[@]}" --scenes crease --budget-ms -5 --out out
   new_case parse-error-missing-value

@@ -76,16 +76,16 @@ TEST_CASE("seed 004's SsaoUniform bytes equal an independently assembled image",
 
 TEST_CASE("Taos SSAO block: sizes and offsets worked out from each rule set", "[uniforms]")
 {
-    // 3 mat4 (192 bytes), vec2 at 192 and 200, five floats at 208..224, then vec4[16]:
-    // at 240 where a vec4 array aligns to 16, at 228 under scalar rules.
+    // 3 mat4 (192 bytes), vec2 at 192, 200 and 208, five floats at 216..232, then vec4[16]:
+    // at 240 where a vec4 array aligns to 16, at 236 under scalar rules.
     struct expectation { rules r; uint32_t kernel_offset, size; };
-    for (expectation e : {expectation{rules::std140, 240, 496}, {rules::std430, 240, 496}, {rules::scalar, 228, 484},
+    for (expectation e : {expectation{rules::std140, 240, 496}, {rules::std430, 240, 496}, {rules::scalar, 236, 492},
                           {rules::wgsl_uniform, 240, 496}, {rules::hlsl_cbuffer, 240, 496}, {rules::msl, 240, 496}}) {
         INFO(layout::to_name(e.r));
         const layout::struct_layout l = layout::compute(uniforms::ssao_block(16), e.r);
         CHECK(l.size == e.size);
         CHECK(layout::find(l, "kernel")->offset == e.kernel_offset);
-        CHECK(layout::find(l, "intensity")->offset == 224);
+        CHECK(layout::find(l, "intensity")->offset == 232);
     }
 }
 
@@ -104,51 +104,54 @@ TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[unifor
     CHECK(float_at(bytes, 192) == 240.0f);             // noise_scale = 960 / 4
     CHECK(float_at(bytes, 196) == 135.0f);             // 540 / 4
     CHECK(float_at(bytes, 200) == 1.0f / 960.0f);      // texel_size
-    CHECK(float_at(bytes, 208) == 0.5f);               // radius
-    CHECK(float_at(bytes, 212) == 0.025f);             // bias
-    CHECK(float_at(bytes, 216) == 1.0f);               // strength
+    CHECK(float_at(bytes, 208) == 1.0f);               // frame_rotation: the still frame (1, 0)
+    CHECK(float_at(bytes, 212) == 0.0f);
+    CHECK(float_at(bytes, 216) == 0.5f);               // radius
+    CHECK(float_at(bytes, 220) == 0.025f);             // bias
+    CHECK(float_at(bytes, 224) == 1.0f);               // strength
     for (int i = 0; i < 16; ++i) {
         CHECK(float_at(bytes, 240 + 16 * i) == kernel[i].x);
         CHECK(float_at(bytes, 240 + 16 * i + 8) == kernel[i].z);
     }
-    for (size_t pad = 228; pad < 240; ++pad) CHECK(bytes[pad] == 0);
+    for (size_t pad = 236; pad < 240; ++pad) CHECK(bytes[pad] == 0);
 }
 
 TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[uniforms]")
 {
-    // 208 bytes of camera members, then five floats: 228, padded to a vec4 under std140 and cbuffer rules.
+    // 216 bytes of camera members, then five floats: 236, padded to a vec4 under std140 and cbuffer rules.
     CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 240);
-    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 228);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 236);
     CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 240);
     const std::vector<uint8_t> bytes =
         uniforms::pack_gtao(presets::taos_gtao().settings.gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
-    CHECK(float_at(bytes, 208) == 1.0f);  // radius (seed 001)
-    CHECK(float_at(bytes, 212) == 0.1f);  // thickness bias
-    CHECK(float_at(bytes, 216) == 2.0f);  // strength exponent
-    CHECK(float_at(bytes, 220) == 0.0f);  // falloff range: seed 001's hard cut-off
-    CHECK(float_at(bytes, 224) == 0.0f);  // thin-occluder compensation: none
+    CHECK(float_at(bytes, 216) == 1.0f);  // radius (seed 001)
+    CHECK(float_at(bytes, 220) == 0.1f);  // thickness bias
+    CHECK(float_at(bytes, 224) == 2.0f);  // strength exponent
+    CHECK(float_at(bytes, 228) == 0.0f);  // falloff range: seed 001's hard cut-off
+    CHECK(float_at(bytes, 232) == 0.0f);  // thin-occluder compensation: none
     gtao_params g = presets::taos_gtao().settings.gtao;
     g.falloff_range = 0.625f, g.thin_occluder = 1.5f;
     const std::vector<uint8_t> tuned = uniforms::pack_gtao(g, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
-    CHECK(float_at(tuned, 220) == 0.625f);
-    CHECK(float_at(tuned, 224) == 1.5f);
+    CHECK(float_at(tuned, 228) == 0.625f);
+    CHECK(float_at(tuned, 232) == 1.5f);
 }
 
 TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, strength", "[uniforms]")
 {
     const layout::struct_layout l = layout::compute(uniforms::vbao_block(), rules::std140);
-    CHECK(l.size == 224);
+    CHECK(l.size == 240);
     CHECK(l.name == "VbaoUniforms");
-    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 220);
+    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 228);
     vbao_params p;
     p.radius = 2.0f, p.thickness = 0.25f, p.strength = 1.5f;
     const std::vector<uint8_t> bytes = uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
-    REQUIRE(bytes.size() == 224);
+    REQUIRE(bytes.size() == 240);
     CHECK(float_at(bytes, 192) == 240.0f); // noise_scale: a 4×4 tile
-    CHECK(float_at(bytes, 208) == 2.0f);   // radius
-    CHECK(float_at(bytes, 212) == 0.5f);   // thickness: 0.25 of the radius, in world units
-    CHECK(float_at(bytes, 216) == 1.5f);   // strength
-    for (size_t pad = 220; pad < 224; ++pad) CHECK(bytes[pad] == 0);
+    CHECK(float_at(bytes, 208) == 1.0f);   // frame_rotation: the still frame
+    CHECK(float_at(bytes, 216) == 2.0f);   // radius
+    CHECK(float_at(bytes, 220) == 0.5f);   // thickness: 0.25 of the radius, in world units
+    CHECK(float_at(bytes, 224) == 1.5f);   // strength
+    for (size_t pad = 228; pad < 240; ++pad) CHECK(bytes[pad] == 0);
     p.thickness = -1;
     CHECK_THROWS_WITH(uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140), Catch::Contains("vbao.thickness"));
 }
@@ -156,22 +159,23 @@ TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, str
 TEST_CASE("SAO block: GTAO's camera, then radius, bias, intensity, contrast and the spiral", "[uniforms]")
 {
     const layout::struct_layout l = layout::compute(uniforms::sao_block(4), rules::std140);
-    CHECK(l.size == 224 + 4 * 16);
+    CHECK(l.size == 240 + 4 * 16);
     CHECK(l.name == "SaoUniforms");
     sao_params p;
     p.radius = 2.0f, p.bias = 0.125f, p.intensity = 1.5f, p.contrast = 0.75f;
     const std::vector<uint8_t> bytes = uniforms::pack_sao(p, {mat4{}, perspective(1, 1, 1, 3)}, 4, {960, 540}, rules::std140);
-    REQUIRE(bytes.size() == 288);
+    REQUIRE(bytes.size() == 304);
     CHECK(float_at(bytes, 192) == 240.0f); // noise_scale: a 4×4 tile
-    CHECK(float_at(bytes, 208) == 2.0f);   // radius
-    CHECK(float_at(bytes, 212) == 0.125f); // bias, a share of the radius
-    CHECK(float_at(bytes, 216) == 1.5f);   // intensity
-    CHECK(float_at(bytes, 220) == 0.75f);  // contrast
+    CHECK(float_at(bytes, 208) == 1.0f);   // frame_rotation: the still frame
+    CHECK(float_at(bytes, 216) == 2.0f);   // radius
+    CHECK(float_at(bytes, 220) == 0.125f); // bias, a share of the radius
+    CHECK(float_at(bytes, 224) == 1.5f);   // intensity
+    CHECK(float_at(bytes, 228) == 0.75f);  // contrast
     const std::vector<vec4> spiral = spiral::taps(4);
     for (size_t i = 0; i < 4; ++i) {
-        CHECK(float_at(bytes, 224 + 16 * i) == spiral[i].x);
-        CHECK(float_at(bytes, 224 + 16 * i + 4) == spiral[i].y);
-        CHECK(float_at(bytes, 224 + 16 * i + 8) == spiral[i].z);
+        CHECK(float_at(bytes, 240 + 16 * i) == spiral[i].x);
+        CHECK(float_at(bytes, 240 + 16 * i + 4) == spiral[i].y);
+        CHECK(float_at(bytes, 240 + 16 * i + 8) == spiral[i].z);
     }
     p.contrast = 0;
     CHECK_THROWS_WITH(uniforms::pack_sao(p, {mat4{}, perspective(1, 1, 1, 3)}, 4, {960, 540}, rules::std140), Catch::Contains("sao.contrast"));

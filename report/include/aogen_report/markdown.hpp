@@ -24,7 +24,7 @@ inline void write_measurement(std::ostream& md, const report_data& d, const repo
 {
     if (!meta.complete) md << partial_notice(d) << "\n\n";
     for (const std::string& fact : measurement_facts(d, meta)) md << "- " << fact << "\n";
-    md << "\n" << how_to_read() << "\n\n";
+    md << "\n" << how_to_read(d.frames) << "\n\n";
     md << "![error against time](error_vs_time.svg)\n\nThe same plot in [report.html](report.html) names every point on hover, "
           "with a table to sort and filter and every variant's images on every scene.\n\n";
 }
@@ -33,13 +33,15 @@ inline void write_measurement(std::ostream& md, const report_data& d, const repo
 inline void write_variants(std::ostream& md, const report_data& d)
 {
     md << "## Variants, fastest first\n\n";
-    md << "| variant | ms | p10–p90 | floor ms | × floor | BW floor ms | × BW | RMSE default | ★ | RMSE calibrated | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
-    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|---:|---:|\n";
+    md << "| variant | ms | p10–p90 | floor ms | × floor | BW floor ms | × BW | RMSE default | ★ | RMSE calibrated | ★ | RMSE after " << d.frames
+       << " frames | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|:-:|---:|---:|---:|\n";
     for (size_t i : detail::by_time(d.variants)) {
         const variant_record& v = d.variants[i];
         md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << detail::range(v.ms_p10, v.ms_p90) << " | " << fixed(v.floor_ms, 3) << " | "
            << fixed(v.floor_ratio, 2) << " | " << fixed(v.bandwidth_ms, 3) << " | " << fixed(v.bandwidth_ratio, 2) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | " << fixed(v.rmse_calibrated, 4)
-           << " | " << (v.pareto_calibrated ? "★" : "") << " | " << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
+           << " | " << (v.pareto_calibrated ? "★" : "") << " | " << fixed(v.rmse_accumulated, 4) << " | " << (v.pareto_accumulated ? "★" : "") << " | "
+           << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
            << " | " << detail::raw_range(v.raw, v.raw_measured) << " |\n";
     }
 }
@@ -59,7 +61,8 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
 {
     md << "\n## Per scene\n\n";
     md << "Columns: median ms and p10–p90; time / fetch floor; time / bandwidth floor; default RMSE, MAE, mean signed error (> 0: too light), "
-          "99th-percentile |error|; calibrated RMSE and its power p; raw NaN/Inf and out-of-range values (all passes).\n";
+          "99th-percentile |error|; calibrated RMSE and its power p; RMSE of the mean of the first "
+       << d.frames << " frames; raw NaN/Inf and out-of-range values (all passes).\n";
     for (size_t s = 0; s < d.scenes.size(); ++s) {
         md << "\n### " << d.scenes[s].scene.name << "\n\n";
         const auto strip = strips.find(d.scenes[s].scene.name);
@@ -68,8 +71,8 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
             for (size_t k = 0; k < strip->second.variants.size(); ++k) md << (k ? ", " : "") << "`" << strip->second.variants[k] << "`";
             md << ".\n\n";
         }
-        md << "| variant | ms | p10–p90 | × floor | × BW | RMSE | MAE | signed | p99 | RMSE cal. | p | raw NaN/Inf | raw out of [0, 1] |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        md << "| variant | ms | p10–p90 | × floor | × BW | RMSE | MAE | signed | p99 | RMSE cal. | p | RMSE " << d.frames << " fr. | raw NaN/Inf | raw out of [0, 1] |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (size_t i : detail::by_time(d.variants)) {
             const variant_record& v = d.variants[i];
             const run_record& r = v.runs[s];
@@ -79,7 +82,8 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
             md << "| `" << v.name << "` | " << fixed(r.ms.median, 3) << " | " << detail::range(r.ms.p10, r.ms.p90) << " | "
                << fixed(r.ms.median / r.floor_ms.median, 2) << " | " << fixed(r.ms.median / r.bandwidth_ms.median, 2) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
                << fixed(r.plain.mean_signed, 4) << " | " << fixed(r.plain.p99_abs, 3) << " | " << fixed(r.calibrated.rmse, 4) << " | "
-               << fixed(r.power, 2) << " | " << detail::raw_non_finite(raw, !r.raw.empty()) << " | " << detail::raw_range(raw, !r.raw.empty())
+               << fixed(r.power, 2) << " | " << fixed(r.accumulated.rmse, 4) << " | " << detail::raw_non_finite(raw, !r.raw.empty()) << " | "
+               << detail::raw_range(raw, !r.raw.empty())
                << " |\n";
         }
     }

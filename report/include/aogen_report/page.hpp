@@ -7,8 +7,8 @@
 // scene as PNG data: URIs. In order:
 //   - the header facts and how to read them (report_sections.hpp: the same words as
 //     report.md);
-//   - the plot: default and calibrated error against time, a marker per variant, named on
-//     hover or focus;
+//   - the plot: default, calibrated and (with more than one frame) accumulated error against
+//     time, a marker per variant, named on hover or focus;
 //   - the variants table, sortable by every column and filtered by technique,
 //     resolution, blur and stage; selecting a row (or a marker) shows its strips, per
 //     scene reference | variant | |error| with the variant's numbers on that scene;
@@ -47,7 +47,7 @@ inline std::vector<plot_point> plot_points(const report_data& d)
     for (size_t i = 0; i < d.variants.size(); ++i) {
         const variant_record& v = d.variants[i];
         points.push_back({i, v.name, plot_label(v.name), aogen::to_name(v.v.tech), aogen::to_name(v.v.stage), v.ms, v.ms_p10, v.ms_p90, v.rmse,
-                          v.rmse_calibrated, v.pareto, v.pareto_calibrated});
+                          v.rmse_calibrated, v.rmse_accumulated, v.pareto, v.pareto_calibrated, v.pareto_accumulated});
     }
     return points;
 }
@@ -138,6 +138,7 @@ inline std::vector<double> pass_medians(const variant_record& v)
 inline std::string page_data(const report_data& d)
 {
     nlohmann::json j;
+    j["frames"] = d.frames;
     j["scenes"] = nlohmann::json::array();
     j["images"]["reference"] = nlohmann::json::array();
     std::vector<display_grid> grids; // per scene
@@ -159,13 +160,14 @@ inline std::string page_data(const report_data& d)
             }
             const auto [png, factor] = ao_png(r.ao, d.scenes[s].truth, grids[s]);
             runs.push_back({{"ms", number(r.ms.median)}, {"rmse", number(r.plain.rmse)}, {"rmse_calibrated", number(r.calibrated.rmse)},
-                            {"power", number(r.power)}, {"factor", factor}});
+                            {"rmse_accumulated", number(r.accumulated.rmse)}, {"power", number(r.power)}, {"factor", factor}});
             images.push_back(png_uri(png));
         }
         nlohmann::json pass_ms = nlohmann::json::array();
         for (double ms : pass_medians(v)) pass_ms.push_back(number(ms));
         j["variants"].push_back({{"name", v.name}, {"ms", number(v.ms)}, {"ms_p10", number(v.ms_p10)}, {"ms_p90", number(v.ms_p90)},
                                  {"floor_ratio", number(v.floor_ratio)}, {"rmse", number(v.rmse)}, {"rmse_calibrated", number(v.rmse_calibrated)},
+                                 {"rmse_accumulated", number(v.rmse_accumulated)},
                                  {"passes", v.passes}, {"pass_ms", pass_ms}, {"runs", runs}});
         j["images"]["ao"].push_back(images);
     }
@@ -223,8 +225,10 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
 
     html << "<div class=\"table-scroll\"><table id=\"variant-table\">\n<thead><tr>" << sort_header("variant", "text", false);
     for (const axis& a : axes) html << sort_header(a.title, "text", false);
-    for (const char* title : {"ms", "p10", "p90", "× floor", "× BW", "RMSE default", "★", "RMSE calibrated", "★ cal.", "AO instructions"})
+    for (const char* title : {"ms", "p10", "p90", "× floor", "× BW", "RMSE default", "★", "RMSE calibrated", "★ cal."})
         html << sort_header(title, "number", true);
+    html << sort_header("RMSE after " + std::to_string(d.frames) + " frames", "number", true) << sort_header("★ frames", "number", true)
+         << sort_header("AO instructions", "number", true);
     html << sort_header("raw NaN/Inf", "text", true) << "</tr></thead>\n<tbody>\n";
     for (size_t i : by_time(d.variants)) {
         const variant_record& v = d.variants[i];
@@ -236,6 +240,7 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
              << value_cell(v.floor_ratio, fixed(v.floor_ratio, 2)) << value_cell(v.bandwidth_ratio, fixed(v.bandwidth_ratio, 2))
              << value_cell(v.rmse, fixed(v.rmse, 4)) << value_cell(v.pareto, v.pareto ? "★" : "", 0)
              << value_cell(v.rmse_calibrated, fixed(v.rmse_calibrated, 4)) << value_cell(v.pareto_calibrated, v.pareto_calibrated ? "★" : "", 0)
+             << value_cell(v.rmse_accumulated, fixed(v.rmse_accumulated, 4)) << value_cell(v.pareto_accumulated, v.pareto_accumulated ? "★" : "", 0)
              << value_cell(v.ao_instructions, std::to_string(v.ao_instructions), 0) << text_cell(raw_non_finite(v.raw, v.raw_measured), "num")
              << "</tr>\n";
     }
@@ -253,11 +258,11 @@ inline std::string report_page(const report_data& d, const report_meta& meta)
          << "<style>" << page_style << "</style>\n</head>\n<body>\n";
     html << "<header>\n<h1>aogen report: AO error against run time</h1>\n";
     if (!meta.complete) html << "<p>" << html_from_markdown(partial_notice(d)) << "</p>\n";
-    html << html_list(measurement_facts(d, meta), "class=\"facts\"") << "<p class=\"how\">" << html_from_markdown(how_to_read()) << "</p>\n</header>\n";
+    html << html_list(measurement_facts(d, meta), "class=\"facts\"") << "<p class=\"how\">" << html_from_markdown(how_to_read(d.frames)) << "</p>\n</header>\n";
 
     html << "<section id=\"plot\">\n<h2>Error against time</h2>\n"
          << "<p>Every marker is a variant: hover or focus it for its numbers, click it for its images.</p>\n"
-         << error_time_svg(plot_points(d), plot_title(d)) << "</section>\n<div id=\"tooltip\" role=\"tooltip\" hidden></div>\n";
+         << error_time_svg(plot_points(d), plot_title(d), d.frames) << "</section>\n<div id=\"tooltip\" role=\"tooltip\" hidden></div>\n";
 
     html << "<section id=\"variants\">\n<h2>Variants</h2>\n<p>Click a column's title to sort by it (again: the other way round); "
             "pick a technique, resolution, blur or stage to filter; click a row for its images on every scene.</p>\n";

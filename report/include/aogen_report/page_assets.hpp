@@ -86,7 +86,8 @@ inline constexpr const char* page_script = R"js(
     const passes = v.passes.map((p, k) => p + ' ' + fixed(v.pass_ms[k], 3)).join(', ');
     return [
       fixed(v.ms, 3) + ' ms (p10–p90 ' + fixed(v.ms_p10, 3) + '–' + fixed(v.ms_p90, 3) + '), × floor ' + fixed(v.floor_ratio, 2),
-      'RMSE ' + fixed(v.rmse, 4) + ' default, ' + fixed(v.rmse_calibrated, 4) + ' calibrated',
+      'RMSE ' + fixed(v.rmse, 4) + ' default, ' + fixed(v.rmse_calibrated, 4) + ' calibrated' +
+        (data.frames > 1 ? ', ' + fixed(v.rmse_accumulated, 4) + ' after ' + data.frames + ' frames' : ''),
       'passes (ms): ' + passes
     ];
   }
@@ -232,7 +233,7 @@ inline constexpr const char* page_script = R"js(
       const caption = document.createElement('figcaption');
       caption.textContent = run.skipped ? scene.name + ': not run (' + run.skipped + ')'
         : scene.name + ': ' + fixed(run.ms, 3) + ' ms, RMSE ' + fixed(run.rmse, 4) + ' default, ' + fixed(run.rmse_calibrated, 4) +
-          ' calibrated (p ' + fixed(run.power, 2) + ')';
+          ' calibrated (p ' + fixed(run.power, 2) + ')' + (data.frames > 1 ? ', ' + fixed(run.rmse_accumulated, 4) + ' after ' + data.frames + ' frames' : '');
       figure.appendChild(caption);
       if (!run.skipped) {
         const row = document.createElement('div');

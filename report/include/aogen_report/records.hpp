@@ -76,6 +76,7 @@ struct ao_readback {
 struct run_record {
     std::string skipped;                          // why it did not run; "" when it ran
     error_metrics plain, calibrated;              // default parameters; ao^power
+    error_metrics accumulated;                    // the mean of frames 0..N-1 (report_data::frames)
     double power = 1;                             // fitted on the other scenes
     calibration_scene summary;                    // of the default-parameter AO
     std::vector<aogen::vulkan::raw_counts> raw;   // per pass, before the guard; empty: not measured
@@ -97,12 +98,13 @@ struct variant_record {
     std::vector<run_record> runs;       // one per scene so far, in settings order
     // Summaries over the scenes it ran on.
     double rmse = std::numeric_limits<double>::quiet_NaN(), rmse_calibrated = rmse;
+    double rmse_accumulated = rmse;                 // after report_data::frames frames
     double ms = rmse, ms_p10 = rmse, ms_p90 = rmse; // medians over scenes of each scene's median, p10, p90
     double floor_ms = rmse, floor_ratio = rmse;     // median over scenes of the fetch floor, and of time / floor
     double bandwidth_ms = rmse, bandwidth_ratio = rmse; // the same of the bandwidth floor
     aogen::vulkan::raw_counts raw;                  // summed over scenes and passes
     bool raw_measured = false;                      // a diagnostic build ran (fragment passes need fragment stores)
-    bool pareto = false, pareto_calibrated = false;
+    bool pareto = false, pareto_calibrated = false, pareto_accumulated = false;
 };
 
 // The scene-selected variant beside the same variant with every feature compiled in.
@@ -124,6 +126,7 @@ struct phase_times {
 struct report_data {
     std::string device;
     int grid = 0;
+    int frames = 1;                        // frames averaged for the accumulated error (temporal.hpp)
     aogen::vulkan::timing_options timing;
     bool fetch_floor = true;
     double max_sm_mhz = 0;                 // nvidia-smi's clocks.max.sm; 0 when unknown

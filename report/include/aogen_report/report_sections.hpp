@@ -3,7 +3,7 @@
 // html_text.hpp show it as HTML).
 //
 //     for (const std::string& fact : aogen_report::measurement_facts(d, meta)) ...
-//     std::string how = aogen_report::how_to_read();
+//     std::string how = aogen_report::how_to_read(data.frames);
 //     aogen_report::text_table scenes = aogen_report::scenes_table(d, strip_files);
 //
 //   partial_notice      what a report written after each scene says first
@@ -94,6 +94,9 @@ inline std::vector<std::string> measurement_facts(const report_data& d, const re
     facts.push_back(std::to_string(d.scenes.size()) + " scenes at " + std::to_string(first.scene.camera.width) + "×" +
                     std::to_string(first.scene.camera.height) + ", " + std::to_string(d.variants.size()) + " variants");
     facts.push_back("Reference: Embree, " + std::to_string(d.grid * d.grid) + " stratified cosine-distributed rays per pixel");
+    if (d.frames > 1)
+        facts.push_back("Temporal accumulation: " + std::to_string(d.frames) + " frames per variant and scene (frame index 0.." +
+                        std::to_string(d.frames - 1) + ", aogen::temporal's van der Corput turns of the noise), their plain mean scored");
     int fewest = d.timing.iterations, most = 0;
     for (const scene_record& s : d.scenes) fewest = std::min(fewest, s.iterations), most = std::max(most, s.iterations);
     facts.push_back("Times: per scene, every chain bound once (device-local memory), " + fixed(d.timing.warmup_ms, 0) +
@@ -121,14 +124,16 @@ inline std::vector<std::string> measurement_facts(const report_data& d, const re
 }
 
 // What each column means.
-inline std::string how_to_read()
+inline std::string how_to_read(int frames)
 {
     return "**How to read it.** Error is the RMSE of the variant's AO against the ray-traced reference over the pixels that show "
            "geometry (background excluded), the mean over the scenes the variant ran on. Half-resolution variants are scored at "
            "full resolution as displayed: through their depth-aware upsample pass, or, for `-nearest` variants, after nearest "
            "upsampling. *Default*: the variant's default parameters (seed presets, lengths scaled to "
            "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
-           "so no scene is scored with a fit made on it. Time is the median over scenes of each scene's median (p10–p90 likewise). "
+           "so no scene is scored with a fit made on it. *After " + std::to_string(frames) + " frames*: the plain mean of the variant's first " +
+           std::to_string(frames) + " frames, each turning the noise by the frame index's next rotation, with a still camera — what "
+           "TAA's history shows once it has that many frames, the default output being frame 0. Time is the median over scenes of each scene's median (p10–p90 likewise). "
            "*Floor* is the variant's fetch floor: its passes' texel fetches at the same positions with none of the shading "
            "(report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
            "variant is bound by its memory traffic, far above it by its arithmetic. *BW floor* is its bandwidth floor: each "

@@ -4,7 +4,7 @@
 //
 // Layout (numbers as measured; times NaN — no timestamps, not timed — are null; "ms" is
 // always a median, "_p10"/"_p90" the nearest-rank percentiles of the same samples):
-//   { "aogen_report": 2, "device", "command", "rays_per_pixel", "complete": bool,
+//   { "aogen_report": 2, "device", "command", "rays_per_pixel", "frames", "complete": bool,
 //     "timing": {rounds, iterations, warmup_ms, budget_ms, fetch_floor},   // iterations: the most per round
 //     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
 //     "phases_s": {compile, trace, score, time, runs},
@@ -14,11 +14,12 @@
 //                   iterations, settled}],           // per round, as the budget allowed; warm-up settled
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
 //                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, bandwidth_ms, bandwidth_ratio, rmse, rmse_calibrated,
-//                   raw: {measured, nan, inf, below_zero, above_one, max_excess}, pareto, pareto_calibrated,
+//                   rmse_accumulated,                  // of the mean of "frames" frames (temporal.hpp)
+//                   raw: {measured, nan, inf, below_zero, above_one, max_excess}, pareto, pareto_calibrated, pareto_accumulated,
 //                   scenes: [{scene, skipped | {ms, ms_p10, ms_p90, pass_ms, floor_ms, bandwidth_ms, power,
 //                             raw: [{nan, inf, below_zero, above_one, max_excess} per pass],
 //                             default: {rmse, mae, mean_signed, p99_abs, non_finite, pixels},
-//                             calibrated: {...}}]}],
+//                             calibrated: {...}, accumulated: {...}}]}],
 //     "feature_saving": [{selected, everything_on, selected_instructions, everything_on_instructions,
 //                         selected_ms, everything_on_ms, ratio, ratio_p10, ratio_p90,
 //                         selected_rmse, everything_on_rmse, left_out}] }
@@ -77,6 +78,7 @@ inline nlohmann::json run_json(const run_record& r, const std::string& scene)
     e["raw"] = raw;
     e["default"] = metrics_json(r.plain);
     e["calibrated"] = metrics_json(r.calibrated);
+    e["accumulated"] = metrics_json(r.accumulated);
     return e;
 }
 
@@ -102,9 +104,11 @@ inline nlohmann::json variant_json(const variant_record& v, const std::vector<sc
             {"bandwidth_ratio", number(v.bandwidth_ratio)},
             {"rmse", number(v.rmse)},
             {"rmse_calibrated", number(v.rmse_calibrated)},
+            {"rmse_accumulated", number(v.rmse_accumulated)},
             {"raw", raw},
             {"pareto", v.pareto},
             {"pareto_calibrated", v.pareto_calibrated},
+            {"pareto_accumulated", v.pareto_accumulated},
             {"scenes", per_scene}};
 }
 
@@ -118,6 +122,7 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
     j["command"] = meta.command;
     j["complete"] = meta.complete;
     j["rays_per_pixel"] = d.grid * d.grid;
+    j["frames"] = d.frames;
     j["timing"] = {{"rounds", d.timing.rounds}, {"iterations", d.timing.iterations}, {"warmup_ms", d.timing.warmup_ms},
                    {"budget_ms", d.timing.budget_ms}, {"fetch_floor", d.fetch_floor}};
     j["clocks"] = detail::clocks_json(d.clocks);

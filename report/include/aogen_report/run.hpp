@@ -16,7 +16,10 @@
 //           its diagnostic form with its default parameters: the AO read back (the
 //           diagnostic output is the shipped one), upsampled to full resolution and
 //           compared with the reference (metrics.hpp); its raw values before the guard
-//           counted (NaN, Inf, out of [0, 1], per pass);
+//           counted (NaN, Inf, out of [0, 1], per pass). Then frames 1..frames-1 of the
+//           shipped chain (temporal.hpp's frame index turning the noise), and the plain
+//           mean of all the frames compared with the reference: the AO a static camera
+//           shows after an accumulation of that many frames;
 //        c. timing: the shipped chains, their fetch floors and the point-cloud twins
 //           bound at once and timed together (vulkan::time_chains): a warm-up of
 //           continuous GPU work, then rounds in which every chain runs back to back,
@@ -72,6 +75,10 @@ struct report_settings {
     std::vector<aogen::variant> variants;
     int width = 0, height = 0;       // every scene's resolution; 0: each scene's own
     int grid = 64;                   // reference rays per pixel: grid × grid
+    // Frames averaged for the "after N frames" error (a static camera, a plain mean standing
+    // in for TAA's history): frame 0 is the single-frame output.
+    static constexpr aogen::int_range frames_range{1, 1024};
+    int frames = 8;
     // Per scene: 3 rounds of up to 20 iterations of every chain, as many as fit ~1 s of GPU
     // work (a GPU runs 20, lavapipe 1), after a warm-up of at least 500 ms, until settled.
     aogen::vulkan::timing_options timing{3, 20, 500.0, 1000.0};
@@ -162,14 +169,26 @@ inline std::string why_not(const variant_record& r, const scene_record& s, bool 
 }
 
 // Scores `c` on one scene: runs its diagnostic build once (the shipped one where there is
-// none), reads the AO back, counts raw values; metrics follow in finish_scoring().
-inline run_record score(const compiled_variant& c, scene_bench& bench)
+// none), reads the AO back, counts raw values; then runs the shipped chain at frames
+// 1..frames-1 and scores the mean of all `frames` frames against the truth. The
+// single-frame metrics follow in finish_scoring().
+inline run_record score(const compiled_variant& c, scene_bench& bench, int frames)
 {
     run_record r;
     const aogen::vulkan::chain& chain = c.diagnostic ? *c.diagnostic : *c.shipped;
-    const bench_run out = bench.run(chain, default_settings(chain.var(), bench.scene()));
+    aogen::vulkan::chain_settings settings = default_settings(chain.var(), bench.scene());
+    const bench_run out = bench.run(chain, settings);
     r.raw = out.out.raw;
     r.ao = ao_readback::of(out.out, out.scale);
+    std::vector<double> sum(out.full.begin(), out.full.end());
+    for (int f = 1; f < frames; ++f) {
+        settings.frame = uint32_t(f);
+        const bench_run next = bench.run(*c.shipped, settings);
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += next.full[i];
+    }
+    std::vector<float> mean(sum.size());
+    for (size_t i = 0; i < sum.size(); ++i) mean[i] = float(sum[i] / frames);
+    r.accumulated = compare(mean, bench.truth().ao, bench.truth().valid);
     return r;
 }
 
@@ -234,6 +253,7 @@ inline double seconds_since(std::chrono::steady_clock::time_point t)
 // not a score).
 inline void require_scoreable(const report_settings& settings)
 {
+    aogen::require_in("--frames", settings.frames, report_settings::frames_range);
     if (settings.scenes.empty()) aogen::fail("report", "no scenes", "valid: at least one scene");
     if (settings.variants.empty()) aogen::fail("report", "no variants", "valid: at least one variant");
     for (aogen::scenes::scene s : settings.scenes) {
@@ -292,13 +312,14 @@ inline compiled_records compile_records(aogen::vulkan::context& ctx, report_data
 
 // Scoring: every record that can run on the bench's scene, once, in its diagnostic build;
 // each record gets a run for the scene (a skipped one saying why). Returns the runs scored.
-inline size_t score_scene(scene_bench& bench, report_data& out, const compiled_records& c)
+inline size_t score_scene(scene_bench& bench, report_data& out, const compiled_records& c, int frames)
 {
     const scene_record& scene = out.scenes.back();
     std::vector<run_record*> scored;
     const auto score_record = [&](variant_record& r, const compiled_variant& compiled, bool twin) {
         const std::string skipped = why_not(r, scene, twin);
-        r.runs.push_back(skipped.empty() ? score(compiled, bench) : run_record{skipped});
+        // A twin is there for its time and single-frame error (the feature saving): one frame.
+        r.runs.push_back(skipped.empty() ? score(compiled, bench, twin ? 1 : frames) : run_record{skipped});
         if (skipped.empty()) scored.push_back(&r.runs.back());
     };
     for (size_t i = 0; i < out.variants.size(); ++i) score_record(out.variants[i], c.variants[i], false);
@@ -372,7 +393,7 @@ inline report_data run_report(const report_settings& settings)
     using clock = std::chrono::steady_clock;
     detail::require_scoreable(settings);
     report_data out;
-    out.grid = settings.grid, out.timing = settings.timing, out.fetch_floor = settings.fetch_floor;
+    out.grid = settings.grid, out.frames = settings.frames, out.timing = settings.timing, out.fetch_floor = settings.fetch_floor;
     // Then: a missing device fails before any compiling or tracing.
     aogen::vulkan::context ctx(settings.device);
     out.device = ctx.device_name();
@@ -401,8 +422,9 @@ inline report_data run_report(const report_settings& settings)
         out.phases.trace += detail::seconds_since(trace_start);
 
         const auto score_start = clock::now();
-        settings.progress(tag + ": scoring " + std::to_string(out.variants.size() + out.twins.size()) + " variants");
-        out.phases.runs += detail::score_scene(bench, out, compiled);
+        settings.progress(tag + ": scoring " + std::to_string(out.variants.size() + out.twins.size()) + " variants" +
+                          (settings.frames > 1 ? " (" + std::to_string(settings.frames) + " frames each)" : ""));
+        out.phases.runs += detail::score_scene(bench, out, compiled, settings.frames);
         out.phases.score += detail::seconds_since(score_start);
 
         const auto time_start = clock::now();

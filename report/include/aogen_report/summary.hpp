@@ -4,9 +4,10 @@
 //     aogen_report::detail::summarise_all(data, twin_of);   // after every scene
 //
 // The calibrated column: ao^p, p fitted on the other scenes (calibrate.hpp). Per variant:
-// the mean RMSE over the scenes it ran on, the median of its per-scene median times, p10
+// the mean RMSE over the scenes it ran on (of the single frame, calibrated, and after the
+// report's frames), the median of its per-scene median times, p10
 // and p90, its fetch floor and time / floor. Pareto-optimal variants by time against
-// default and calibrated RMSE (pareto.hpp). The feature saving: each SSAO variant without
+// default, calibrated and accumulated RMSE (pareto.hpp). The feature saving: each SSAO variant without
 // the point-cloud fallback against its twin with it on the mesh-only scenes.
 #pragma once
 
@@ -50,21 +51,21 @@ inline void calibrate(variant_record& v, const std::vector<scene_record>& scenes
 
 inline void summarise_variant(variant_record& v)
 {
-    double plain = 0, calibrated = 0;
+    double plain = 0, calibrated = 0, accumulated = 0;
     int count = 0;
     std::vector<double> ms, p10, p90, floors, ratios, bandwidths, bandwidth_ratios;
     v.raw = {};
     v.raw_measured = false;
     for (const run_record& r : v.runs) {
         if (!r.ran()) continue;
-        plain += r.plain.rmse, calibrated += r.calibrated.rmse, ++count;
+        plain += r.plain.rmse, calibrated += r.calibrated.rmse, accumulated += r.accumulated.rmse, ++count;
         for (const aogen::vulkan::raw_counts& c : r.raw) v.raw += c;
         v.raw_measured = v.raw_measured || !r.raw.empty();
         ms.push_back(r.ms.median), p10.push_back(r.ms.p10), p90.push_back(r.ms.p90);
         floors.push_back(r.floor_ms.median), ratios.push_back(r.ms.median / r.floor_ms.median);
         bandwidths.push_back(r.bandwidth_ms.median), bandwidth_ratios.push_back(r.ms.median / r.bandwidth_ms.median);
     }
-    if (count > 0) v.rmse = plain / count, v.rmse_calibrated = calibrated / count;
+    if (count > 0) v.rmse = plain / count, v.rmse_calibrated = calibrated / count, v.rmse_accumulated = accumulated / count;
     v.ms = median(ms), v.ms_p10 = median(p10), v.ms_p90 = median(p90);
     v.floor_ms = median(floors), v.floor_ratio = median(ratios);
     v.bandwidth_ms = median(bandwidths), v.bandwidth_ratio = median(bandwidth_ratios);
@@ -72,10 +73,11 @@ inline void summarise_variant(variant_record& v)
 
 inline void mark_pareto(std::vector<variant_record>& variants)
 {
-    std::vector<double> ms, plain, calibrated;
-    for (const variant_record& v : variants) ms.push_back(v.ms), plain.push_back(v.rmse), calibrated.push_back(v.rmse_calibrated);
-    const std::vector<bool> p = pareto_optimal(ms, plain), pc = pareto_optimal(ms, calibrated);
-    for (size_t i = 0; i < variants.size(); ++i) variants[i].pareto = p[i], variants[i].pareto_calibrated = pc[i];
+    std::vector<double> ms, plain, calibrated, accumulated;
+    for (const variant_record& v : variants)
+        ms.push_back(v.ms), plain.push_back(v.rmse), calibrated.push_back(v.rmse_calibrated), accumulated.push_back(v.rmse_accumulated);
+    const std::vector<bool> p = pareto_optimal(ms, plain), pc = pareto_optimal(ms, calibrated), pa = pareto_optimal(ms, accumulated);
+    for (size_t i = 0; i < variants.size(); ++i) variants[i].pareto = p[i], variants[i].pareto_calibrated = pc[i], variants[i].pareto_accumulated = pa[i];
 }
 
 // The feature saving of `selected` against `twin`, the same variant with every feature

@@ -4,8 +4,9 @@
 //     std::vector<aogen_report::plot_point> points = ...;      // one per variant
 //     std::string svg = aogen_report::error_time_svg(points, "aogen: … H200, 18 scenes");
 //
-// Two panels side by side, default parameters and calibrated error, each a scatter of
-// error (RMSE, linear, from 0) against GPU time (log axis). Each variant is one marker:
+// Two panels side by side, default parameters and calibrated error — and a third, the error
+// after N frames of a temporal accumulation, when the report averaged more than one — each
+// a scatter of error (RMSE, linear, from 0) against GPU time (log axis). Each variant is one marker:
 // its shape and colour say the technique (SSAO circle, GTAO triangle, VBAO square, SAO
 // diamond), filled for compute variants, hollow for fragment ones; a thin bar behind it
 // spans the time's p10–p90. The Pareto front (no other variant is both at least as fast
@@ -14,7 +15,7 @@
 // no edge — a crowded front keeps its points unlabelled rather than unreadable.
 //
 // Every marker is an element of class "point" with data-variant (the index the caller
-// gave), data-panel ("default" | "calibrated") and tabindex 0, and holds a <title> with
+// gave), data-panel ("default" | "calibrated" | "accumulated") and tabindex 0, and holds a <title> with
 // the variant's name, time and error: a standalone SVG (report.md shows it) names its
 // points on hover, and the report page (page.hpp) puts its own tooltip in their place.
 // Colours and fonts are attributes, not a style sheet, so the file draws alike on its own
@@ -40,9 +41,13 @@ struct plot_point {
     std::string label;             // its short name (Pareto labels)
     std::string technique, stage;  // "ssao" | "gtao" | "vbao" | "sao"; "compute" | "fragment"
     double ms = NAN, ms_p10 = NAN, ms_p90 = NAN;
-    double error = NAN, error_calibrated = NAN;
-    bool pareto = false, pareto_calibrated = false;
+    double error = NAN, error_calibrated = NAN, error_accumulated = NAN;
+    bool pareto = false, pareto_calibrated = false, pareto_accumulated = false;
 };
+
+// Which error a panel plots: the single frame's at default parameters, calibrated, or the
+// mean of the report's frames.
+enum class plot_error { plain, calibrated, accumulated };
 
 // The short name a label shows: the tokens that tell the default matrix apart
 // ("gtao-2x2-half-denoise-gbufworld-std-persp-cs" → "gtao-2x2-half-denoise").
@@ -137,8 +142,8 @@ struct box {
 // One panel at horizontal offset `left` of the whole image.
 class plot_panel {
 public:
-    plot_panel(const std::vector<plot_point>& points, bool calibrated, double left, double top)
-        : points_(points), calibrated_(calibrated), left_(left), top_(top)
+    plot_panel(const std::vector<plot_point>& points, plot_error kind, double left, double top)
+        : points_(points), kind_(kind), left_(left), top_(top)
     {
         double lo = INFINITY, hi = 0, worst = 0;
         for (const plot_point& p : points_)
@@ -159,8 +164,18 @@ public:
         top_error_ = std::ceil(std::max(worst, 1e-6) * 1.08 / step_) * step_;
     }
 
-    double error(const plot_point& p) const { return calibrated_ ? p.error_calibrated : p.error; }
-    bool pareto(const plot_point& p) const { return calibrated_ ? p.pareto_calibrated : p.pareto; }
+    double error(const plot_point& p) const
+    {
+        return kind_ == plot_error::calibrated ? p.error_calibrated : kind_ == plot_error::accumulated ? p.error_accumulated : p.error;
+    }
+    bool pareto(const plot_point& p) const
+    {
+        return kind_ == plot_error::calibrated ? p.pareto_calibrated : kind_ == plot_error::accumulated ? p.pareto_accumulated : p.pareto;
+    }
+    const char* panel_name() const
+    {
+        return kind_ == plot_error::calibrated ? "calibrated" : kind_ == plot_error::accumulated ? "accumulated" : "default";
+    }
     bool shown(const plot_point& p) const { return std::isfinite(p.ms) && p.ms > 0 && std::isfinite(error(p)); }
 
     // Pixel coordinates of a time and an error.
@@ -169,7 +184,7 @@ public:
 
     void draw(std::ostream& svg, const std::string& title) const
     {
-        svg << "<g class=\"panel\" data-panel=\"" << (calibrated_ ? "calibrated" : "default") << "\">\n";
+        svg << "<g class=\"panel\" data-panel=\"" << panel_name() << "\">\n";
         svg << "<text x=\"" << num(left_ + plot_panel_width / 2) << "\" y=\"" << num(top_ + 18) << "\" text-anchor=\"middle\" font-size=\"13\">"
             << html_escape(title) << "</text>\n";
         draw_axes(svg);
@@ -236,7 +251,7 @@ private:
             if (!shown(p)) continue;
             const technique_style s = style_of(p.technique);
             const bool filled = p.stage != "fragment";
-            svg << "<path class=\"point\" data-variant=\"" << p.variant << "\" data-panel=\"" << (calibrated_ ? "calibrated" : "default")
+            svg << "<path class=\"point\" data-variant=\"" << p.variant << "\" data-panel=\"" << panel_name()
                 << "\" tabindex=\"0\" d=\"" << marker_path(s.shape, x(p.ms), y(error(p))) << "\" fill=\"" << (filled ? s.colour : "#ffffff")
                 << "\" fill-opacity=\"" << (filled ? "0.8" : "1") << "\" stroke=\"" << s.colour << "\" stroke-width=\"1.3\"><title>"
                 << html_escape(p.name) << ": " << fixed(p.ms, 3) << " ms, RMSE " << fixed(error(p), 4) << "</title></path>\n";
@@ -271,7 +286,7 @@ private:
     }
 
     const std::vector<plot_point>& points_;
-    bool calibrated_;
+    plot_error kind_;
     double left_, top_;
     double log_lo_ = -2, log_hi_ = 0, step_ = 0.02, top_error_ = 0.1;
 };
@@ -301,19 +316,24 @@ inline void draw_legend(std::ostream& svg, const std::vector<plot_point>& points
 
 } // namespace detail
 
-// The whole plot: `title` over the two panels, the legend under them.
-inline std::string error_time_svg(const std::vector<plot_point>& points, const std::string& title)
+// The whole plot: `title` over the panels, the legend under them. With `frames` > 1 a third
+// panel plots the error after that many frames (plot_point::error_accumulated).
+inline std::string error_time_svg(const std::vector<plot_point>& points, const std::string& title, int frames = 1)
 {
-    const double width = 2 * detail::plot_panel_width, height = detail::plot_title_height + detail::plot_panel_height + detail::plot_legend_height;
+    const int panels = frames > 1 ? 3 : 2;
+    const double width = panels * detail::plot_panel_width, height = detail::plot_title_height + detail::plot_panel_height + detail::plot_legend_height;
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"error-time-plot\" width=\"" << detail::num(width) << "\" height=\""
         << detail::num(height) << "\" viewBox=\"0 0 " << detail::num(width) << " " << detail::num(height)
         << "\" font-family=\"DejaVu Sans, Arial, sans-serif\" role=\"img\" aria-label=\"" << html_escape(title) << "\">\n";
     svg << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
     svg << "<text x=\"" << detail::num(width / 2) << "\" y=\"18\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">" << html_escape(title) << "</text>\n";
-    detail::plot_panel(points, false, 0, detail::plot_title_height).draw(svg, "Default parameters");
-    detail::plot_panel(points, true, detail::plot_panel_width, detail::plot_title_height)
+    detail::plot_panel(points, plot_error::plain, 0, detail::plot_title_height).draw(svg, "Default parameters");
+    detail::plot_panel(points, plot_error::calibrated, detail::plot_panel_width, detail::plot_title_height)
         .draw(svg, "Calibrated (ao^p, p fitted on the other scenes)");
+    if (panels == 3)
+        detail::plot_panel(points, plot_error::accumulated, 2 * detail::plot_panel_width, detail::plot_title_height)
+            .draw(svg, "After " + std::to_string(frames) + " frames (their plain mean, still camera)");
     detail::draw_legend(svg, points, detail::plot_title_height + detail::plot_panel_height);
     svg << "</svg>\n";
     return svg.str();

@@ -73,31 +73,34 @@ aogen_report::report_data small_report()
     aogen_report::report_data d;
     d.device = "a <b>device</b> & co";
     d.grid = 32;
+    d.frames = 8; // a third panel: the error after 8 frames (here 0.9 of the single frame's)
     d.scenes = {scene_of("crease", 16, 8), scene_of(script_scene, 16, 8)};
-    std::vector<double> ms, rmse, rmse_calibrated;
+    std::vector<double> ms, rmse, rmse_calibrated, rmse_accumulated;
     for (const made_variant& m : made) {
         aogen_report::variant_record v;
         v.v = aogen::variant_from_name(m.name);
         v.name = m.name;
         v.passes = {"ao", "blur"};
         v.ms = m.ms, v.ms_p10 = m.ms * 0.9, v.ms_p90 = m.ms * 1.2, v.floor_ratio = 2, v.bandwidth_ratio = 4;
-        v.rmse = m.rmse, v.rmse_calibrated = m.rmse_calibrated, v.ao_instructions = 1000;
+        v.rmse = m.rmse, v.rmse_calibrated = m.rmse_calibrated, v.rmse_accumulated = 0.9 * m.rmse, v.ao_instructions = 1000;
         for (size_t s = 0; s < d.scenes.size(); ++s) {
             aogen_report::run_record r;
             if (std::string(m.name).rfind("ssao-s8-full-box", 0) == 0 && s == 1) r.skipped = "planted: not run here";
             r.ms.median = m.ms, r.ms.p10 = m.ms * 0.9, r.ms.p90 = m.ms * 1.2;
             r.pass_ms = {r.ms, r.ms};
-            r.plain.rmse = m.rmse, r.calibrated.rmse = m.rmse_calibrated;
+            r.plain.rmse = m.rmse, r.calibrated.rmse = m.rmse_calibrated, r.accumulated.rmse = 0.9 * m.rmse;
             const int factor = v.v.half_resolution ? 2 : 1;
             r.ao.width = 16 / factor, r.ao.height = 8 / factor, r.ao.factor = factor;
             for (int i = 0; i < r.ao.width * r.ao.height; ++i) r.ao.unorm.push_back(uint8_t(i * 7 % 256)); // every texel its own value
             v.runs.push_back(r);
         }
         d.variants.push_back(v);
-        ms.push_back(m.ms), rmse.push_back(m.rmse), rmse_calibrated.push_back(m.rmse_calibrated);
+        ms.push_back(m.ms), rmse.push_back(m.rmse), rmse_calibrated.push_back(m.rmse_calibrated), rmse_accumulated.push_back(0.9 * m.rmse);
     }
-    const std::vector<bool> front = aogen_report::pareto_optimal(ms, rmse), front_calibrated = aogen_report::pareto_optimal(ms, rmse_calibrated);
-    for (size_t i = 0; i < d.variants.size(); ++i) d.variants[i].pareto = front[i], d.variants[i].pareto_calibrated = front_calibrated[i];
+    const std::vector<bool> front = aogen_report::pareto_optimal(ms, rmse), front_calibrated = aogen_report::pareto_optimal(ms, rmse_calibrated),
+                            front_accumulated = aogen_report::pareto_optimal(ms, rmse_accumulated);
+    for (size_t i = 0; i < d.variants.size(); ++i)
+        d.variants[i].pareto = front[i], d.variants[i].pareto_calibrated = front_calibrated[i], d.variants[i].pareto_accumulated = front_accumulated[i];
     return d;
 }
 
@@ -185,7 +188,7 @@ TEST_CASE("page: report.html has no console error and one marker per timed varia
     opened_report page;
     aogen_test::browser& b = page.b;
     CHECK(b.errors().empty());
-    for (const char* panel : {"default", "calibrated"}) {
+    for (const char* panel : {"default", "calibrated", "accumulated"}) {
         const auto shown = b.evaluate(std::string("Array.from(document.querySelectorAll('#plot .point[data-panel=\"") + panel +
                                       "\"]')).map(p => Number(p.dataset.variant))")
                                .get<std::vector<int>>();
@@ -211,12 +214,15 @@ TEST_CASE("page: hovering or focusing a marker names its variant, leaving it hid
     opened_report page;
     aogen_test::browser& b = page.b;
     for (int i : {0, 1, 2, 3, 5})
-        for (const char* panel : {"default", "calibrated"}) {
+        for (const char* panel : {"default", "calibrated", "accumulated"}) {
             const auto [x, y] = centre_of(b, std::string("#plot .point[data-panel=\"") + panel + "\"][data-variant=\"" + std::to_string(i) + "\"]");
             b.mouse_move(x, y);
             INFO(made[i].name << " in the " << panel << " panel at " << x << ", " << y);
             CHECK(b.evaluate("document.getElementById('tooltip').hidden") == false);
             CHECK(b.evaluate("document.querySelector('#tooltip .name').textContent") == made[i].name);
+            // Its errors, the one after the report's 8 frames among them.
+            const std::string text = b.evaluate("document.getElementById('tooltip').textContent");
+            CHECK(text.find(aogen_report::detail::fixed(0.9 * made[i].rmse, 4) + " after 8 frames") != std::string::npos);
             b.mouse_move(2, 2);
             CHECK(b.evaluate("document.getElementById('tooltip').hidden") == true);
         }

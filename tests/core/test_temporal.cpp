@@ -1,0 +1,148 @@
+// aogen/temporal.hpp: the frame index's turns of the noise, against their definitions —
+// the base-2 radical inverse written out by hand, a whole slice period, exact (1, 0) at
+// frame 0 — and the uniform member they reach.
+#include <aogen/chain_inputs.hpp>
+#include <aogen/layout.hpp>
+#include <aogen/temporal.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+using namespace aogen;
+
+namespace {
+
+float float_at(const std::vector<uint8_t>& bytes, size_t offset)
+{
+    float f;
+    std::memcpy(&f, bytes.data() + offset, sizeof f);
+    return f;
+}
+
+uint32_t bits_of(float f)
+{
+    uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+size_t offset_of(const layout::block_desc& block, const std::string& member)
+{
+    for (const layout::member_layout& m : layout::compute(block, layout::rules::std140).members)
+        if (m.name == member) return m.offset;
+    FAIL("no member " << member);
+    return 0;
+}
+
+} // namespace
+
+TEST_CASE("temporal: frame 0 is the still frame, (1, 0) to the bit, for every variant and sequence", "[temporal]")
+{
+    for (const char* name : {"gtao-2x3-half-bilateral-gbufworld-std-persp-cs", "vbao-7x3-full-noblur-recon-std-persp-cs",
+                             "ssao-s16-half-bilateral-gbufworld-std-persp-cs", "sao-s16-half-denoise-gbufworld-std-persp-cs"})
+        for (temporal::sequence s : {temporal::sequence::van_der_corput, temporal::sequence::golden_ratio, temporal::sequence::white}) {
+            INFO(name << ", " << temporal::to_name(s));
+            const vec2 r = temporal::frame_rotation(variant_from_name(name), 0, s);
+            CHECK(bits_of(r.x) == bits_of(1.0f));
+            CHECK(bits_of(r.y) == bits_of(0.0f));
+            CHECK(bits_of(uniforms::still_frame.x) == bits_of(1.0f));
+            CHECK(bits_of(uniforms::still_frame.y) == bits_of(0.0f));
+        }
+}
+
+TEST_CASE("temporal: van der Corput's offsets are the base-2 radical inverse, stratified at every power of two", "[temporal]")
+{
+    // Written out: frame 1 = 0.1b, 2 = 0.01b, 3 = 0.11b, 4 = 0.001b, 5 = 0.101b, 6 = 0.011b, 7 = 0.111b.
+    const double expected[8] = {0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875};
+    for (uint32_t f = 0; f < 8; ++f) CHECK(temporal::offset_turns(temporal::sequence::van_der_corput, f) == expected[f]);
+    CHECK(temporal::offset_turns(temporal::sequence::van_der_corput, 0x80000000u) == 0x1p-32);
+    CHECK(temporal::offset_turns(temporal::sequence::van_der_corput, 0xffffffffu) == 1.0 - 0x1p-32);
+    // The first 2^k frames are the 2^k offsets j / 2^k, each once.
+    for (int k = 0; k <= 10; ++k) {
+        const uint32_t n = 1u << k;
+        std::set<double> seen;
+        for (uint32_t f = 0; f < n; ++f) {
+            const double o = temporal::offset_turns(temporal::sequence::van_der_corput, f);
+            REQUIRE(o * n == std::floor(o * n));
+            seen.insert(o);
+        }
+        CHECK(seen.size() == n);
+    }
+}
+
+TEST_CASE("temporal: the golden ratio and white sequences stay in [0, 1) and repeat bit for bit", "[temporal]")
+{
+    for (temporal::sequence s : {temporal::sequence::golden_ratio, temporal::sequence::white}) {
+        std::set<double> seen;
+        for (uint32_t f = 0; f < 1000; ++f) {
+            const double o = temporal::offset_turns(s, f);
+            REQUIRE(o >= 0.0);
+            REQUIRE(o < 1.0);
+            REQUIRE(o == temporal::offset_turns(s, f));
+            seen.insert(o);
+        }
+        CHECK(seen.size() == 1000);
+    }
+    // fract(f (sqrt(5) - 1) / 2) to the 32-bit fraction's precision.
+    for (uint32_t f : {1u, 2u, 10u, 12345u})
+        CHECK(std::fabs(temporal::offset_turns(temporal::sequence::golden_ratio, f) - std::fmod(f * 0.6180339887498949, 1.0)) < 1e-5);
+}
+
+TEST_CASE("temporal: a frame turns slices within their period and SSAO's kernel within a whole turn", "[temporal]")
+{
+    // GTAO's and VBAO's S slices lie s pi / S apart: turning them by pi / S is no turn at all.
+    CHECK(temporal::period_turns(variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs")) == 0.25);
+    CHECK(temporal::period_turns(variant_from_name("vbao-4x3-half-bilateral-gbufworld-std-persp-cs")) == 0.125);
+    CHECK(temporal::period_turns(variant_from_name("gtao-1x3-half-bilateral-gbufworld-std-persp-cs")) == 0.5);
+    CHECK(temporal::period_turns(variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs")) == 1.0);
+    CHECK(temporal::period_turns(variant_from_name("sao-s16-half-bilateral-gbufworld-std-persp-cs")) == 1.0);
+    // Frame 1 is half a period: 45 degrees for two slices, half a turn for SSAO.
+    const vec2 gtao = temporal::frame_rotation(variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs"), 1);
+    CHECK(gtao.x == Approx(std::sqrt(0.5)).margin(1e-7));
+    CHECK(gtao.y == Approx(std::sqrt(0.5)).margin(1e-7));
+    const vec2 ssao = temporal::frame_rotation(variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-cs"), 1);
+    CHECK(ssao.x == -1.0f);
+    CHECK(ssao.y == 0.0f);
+    // Every frame's rotation is a unit vector.
+    for (uint32_t f = 0; f < 64; ++f) {
+        const vec2 r = temporal::frame_rotation(variant_from_name("gtao-3x3-half-denoise-gbufworld-std-persp-cs"), f);
+        CHECK(std::fabs(std::hypot(r.x, r.y) - 1.0) < 1e-7);
+    }
+}
+
+TEST_CASE("temporal: chain_settings' frame reaches the AO pass's frame_rotation and no other block", "[temporal]")
+{
+    const variant v = variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs");
+    chain_settings s;
+    s.camera = {mat4{}, perspective(1, 1, 1, 3)};
+    const chain_inputs still = inputs_for(v, s, 80, 45);
+    s.frame = 5;
+    const chain_inputs moved = inputs_for(v, s, 80, 45);
+    const size_t at = offset_of(uniforms::gtao_block(), "frame_rotation");
+    const vec2 expected = temporal::frame_rotation(v, 5);
+    CHECK(float_at(still.uniforms[0], at) == 1.0f);
+    CHECK(float_at(still.uniforms[0], at + 4) == 0.0f);
+    CHECK(float_at(moved.uniforms[0], at) == expected.x);
+    CHECK(float_at(moved.uniforms[0], at + 4) == expected.y);
+    // Only those 8 bytes changed; the blur passes' blocks and the tile are the same.
+    REQUIRE(still.uniforms.size() == moved.uniforms.size());
+    size_t changed = 0;
+    for (size_t i = 0; i < still.uniforms[0].size(); ++i) changed += still.uniforms[0][i] != moved.uniforms[0][i];
+    CHECK(changed > 0);
+    CHECK(changed <= 8);
+    for (size_t p = 1; p < still.uniforms.size(); ++p) CHECK(still.uniforms[p] == moved.uniforms[p]);
+    CHECK(still.noise == moved.noise);
+}
+
+TEST_CASE("temporal: sequence names", "[temporal]")
+{
+    CHECK(temporal::sequence_from_name("van_der_corput") == temporal::sequence::van_der_corput);
+    CHECK(temporal::sequence_from_name("golden-ratio") == temporal::sequence::golden_ratio);
+    CHECK(std::string(temporal::to_name(temporal::sequence::white)) == "white");
+    CHECK_THROWS_WITH(temporal::sequence_from_name("halton", "--frame-sequence"),
+                      Catch::Contains("--frame-sequence") && Catch::Contains("halton") && Catch::Contains("van_der_corput, golden_ratio, white"));
+}

@@ -1,0 +1,72 @@
+// The frame index on the GPU (aogen/temporal.hpp, common/noise.glsl): frame f's uniform
+// rotation turns every pixel's noise texel by temporal::frame_rotation(v, f) and changes
+// nothing else. So the oracle of frame f is frame 0 run with every texel of the noise tile
+// turned by that rotation on the host: the same directions, reached the other way. They
+// agree but for the last bit of a texel (the host rounds the turned texel, the shader its
+// product), which moves a pixel's 8-bit output by at most a step, and rarely; a shader that
+// ignores the rotation, or turns the other way, disagrees at most pixels.
+// The accuracy of the frames' mean against the truth is accuracy/temporal_test.cpp's.
+#include "harness.hpp"
+
+#include <cstring>
+
+using namespace aogen;
+using namespace aogen_test;
+
+namespace {
+
+// The noise tile of `in` (RGBA32F texels) with every texel's xy turned by `turn`.
+chain_inputs with_noise_turned(chain_inputs in, vec2 turn)
+{
+    for (size_t at = 0; at + 16 <= in.noise.size(); at += 16) {
+        float t[2];
+        std::memcpy(t, in.noise.data() + at, sizeof t);
+        const double x = double(t[0]) * turn.x - double(t[1]) * turn.y, y = double(t[0]) * turn.y + double(t[1]) * turn.x;
+        t[0] = float(x), t[1] = float(y);
+        std::memcpy(in.noise.data() + at, t, sizeof t);
+    }
+    return in;
+}
+
+} // namespace
+
+TEST_CASE("vulkan: frame f of a chain equals frame 0 with its noise tile turned by frame f's rotation")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    constexpr int W = 96, H = 64;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gbuffer host = crease(W, H, 0.6f, proj); // floor, wall, their crease, background
+    const vulkan::gpu_gbuffer g(*ctx, host);
+    for (const char* name : {"gtao-2x3-full-noblur-gbufworld-std-persp-cs", "vbao-2x3-full-noblur-gbufworld-std-persp-cs",
+                             "ssao-s16-full-noblur-gbufworld-std-persp-cs", "sao-s16-full-noblur-gbufworld-std-persp-cs",
+                             "gtao-2x2-half-denoise-gbufworld-std-persp-cs", "ssao-s16-full-noblur-gbufworld-std-persp-fs"}) {
+        const variant v = variant_from_name(name);
+        const vulkan::chain c = chain_under_test(*ctx, v);
+        const auto [tw, th] = target_size(v, W, H);
+        const vulkan::chain_settings still = settings_for(proj);
+        const vulkan::chain_result frame0 = vulkan::bound_chain(*ctx, c.passes(), g, inputs_for(v, still, tw, th), tw, th).run_once();
+        for (uint32_t f : {1u, 3u, 6u}) {
+            INFO(name << ", frame " << f);
+            vulkan::chain_settings s = still;
+            s.frame = f;
+            const vulkan::chain_result moved = vulkan::bound_chain(*ctx, c.passes(), g, inputs_for(v, s, tw, th), tw, th).run_once();
+            const chain_inputs turned_tile = with_noise_turned(inputs_for(v, still, tw, th), temporal::frame_rotation(v, f));
+            const vulkan::chain_result turned = vulkan::bound_chain(*ctx, c.passes(), g, turned_tile, tw, th).run_once();
+            REQUIRE(moved.ao.size() == turned.ao.size());
+            size_t differ = 0, moved_from_frame0 = 0;
+            float largest = 0;
+            for (size_t i = 0; i < moved.ao.size(); ++i) {
+                const float d = std::fabs(moved.ao[i] - turned.ao[i]);
+                differ += d > 0, largest = std::max(largest, d);
+                moved_from_frame0 += moved.ao[i] != frame0.ao[i];
+            }
+            INFO(differ << " of " << moved.ao.size() << " pixels differ from the turned tile's, by at most " << largest * 255 << "/255; "
+                        << moved_from_frame0 << " differ from frame 0");
+            CHECK(differ * 100 <= moved.ao.size()); // at most 1 %
+            CHECK(largest <= 1.5f / 255);
+            CHECK(moved_from_frame0 * 10 >= moved.ao.size() / 4); // the frame did move the noise where there is occlusion
+        }
+    }
+    require_clean(*ctx);
+}
