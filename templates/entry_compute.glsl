@@ -11,7 +11,7 @@
 // Binding AO_BINDING_OUTPUT: the output, a storage image of the pass's output size (the AO target's; the screen's for upsample) in the
 // format AO_OUTPUT_FORMAT (codegen::options::output_format): r8 (R8_UNORM, the default),
 // rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
-// written is ao_finalize(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
+// written is ao_output(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
 // formats get (ao, 0, 0, 1).
 //
 // AO_DIAGNOSTICS (codegen::options::diagnostics) adds binding AO_BINDING_RAW, an r32f
@@ -65,7 +65,7 @@ void main()
 #if defined(AO_DIAGNOSTICS)
         imageStore(u_raw, pixel, vec4(ao[k]));
 #endif
-        imageStore(u_output, pixel, vec4(ao_finalize(ao[k]), 0.0, 0.0, 1.0));
+        imageStore(u_output, pixel, vec4(ao_output(ao[k]), 0.0, 0.0, 1.0));
     }
 }
 #else
@@ -84,6 +84,6 @@ void main()
 #if defined(AO_DIAGNOSTICS)
     imageStore(u_raw, pixel, vec4(ao));
 #endif
-    imageStore(u_output, pixel, vec4(ao_finalize(ao), 0.0, 0.0, 1.0));
+    imageStore(u_output, pixel, vec4(ao_output(ao), 0.0, 0.0, 1.0));
 }
 #endif

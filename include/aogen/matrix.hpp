@@ -55,6 +55,7 @@ struct variant_matrix {
     std::vector<ssao_decisions> decisions{ssao_decisions::smooth};
     std::vector<bool> fp16{false};
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
+    std::vector<bool> multi_bounce{false};
 };
 
 // Appends canonical(v) unless an equal variant is already in `out`.
@@ -72,7 +73,7 @@ inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40
     size_t product = 1;
     for (size_t n : {m.techniques.size(), m.ssao_samples.size(), m.gtao_slices.size(), m.gtao_steps.size(), m.blur.size(), m.blur_depth.size(),
                      m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
-                     m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size()})
+                     m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size(), m.multi_bounce.size()})
         product = n == 0 ? 0 : std::min(product * std::min(n, cap + 1), cap + 1);
     return product;
 }
@@ -100,11 +101,12 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (ssao_output o : m.output)
     for (ssao_decisions dec : m.decisions)
     for (bool fp16 : m.fp16)
-    for (upsample_mode up : m.upsample) {
+    for (upsample_mode up : m.upsample)
+    for (bool mb : m.multi_bounce) {
         v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
-        v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up;
+        v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up, v.multi_bounce = mb;
         if (pc && t != technique::ssao) continue;
         if (fp16 && t == technique::sao) continue;
         validate(v);

@@ -12,7 +12,9 @@
 //   sao_params    scalable ambient obscurance: the Alchemy estimator over spiral taps
 //   blur_params   the denoise pass after either: the bilateral blur's and the denoise
 //                 filter's weights and depth terms, and the depth-aware upsample's
-//   ao_settings   all five: what a chain of any variant reads (chain_inputs.hpp)
+//   finalize_params  what the chain's last pass does to the AO it writes: the albedo of a
+//                 multi-bounce variant (-mb)
+//   ao_settings   all six: what a chain of any variant reads (chain_inputs.hpp)
 //
 // What a variant compiles in -- sample, slice and step counts, the blur, where normals
 // come from, half resolution, SSAO's output form and range check -- is not here: those
@@ -474,6 +476,26 @@ inline void validate(const blur_params& p, std::string_view prefix = "blur")
 }
 
 // ---------------------------------------------------------------------------------
+// Finalize: what the chain's last pass does to the AO it writes
+// ---------------------------------------------------------------------------------
+struct finalize_params {
+    // Multi-bounce (a -mb variant: variant::multi_bounce): the albedo rho of the surfaces
+    // around the pixel, whose inter-reflections brighten the visibility v by the GTAO
+    // paper's fit (Jimenez et al. 2016, eq. 10; common/core.glsl's ao_multi_bounce):
+    //     out = max(v, ((v a + b) v + c) v),  a = 2.0404 rho - 0.3324,
+    //     b = -4.7951 rho + 0.6417,  c = 2.7552 rho + 0.6903.
+    // One albedo for the whole image (a renderer with an albedo G-buffer would read it per
+    // pixel); 0 leaves v as it is, 1 is a white room. Default 0.5 (ours): a mid-grey world.
+    static constexpr float_range albedo_range{0.0f, 1.0f, false};
+    float albedo = 0.5f;
+};
+
+inline void validate(const finalize_params& p, std::string_view prefix = "finalize")
+{
+    require_in(detail::field(prefix, "albedo"), p.albedo, finalize_params::albedo_range);
+}
+
+// ---------------------------------------------------------------------------------
 // All passes
 // ---------------------------------------------------------------------------------
 
@@ -485,6 +507,7 @@ struct ao_settings {
     vbao_params vbao;
     sao_params sao;
     blur_params blur;
+    finalize_params finalize;
 };
 
 inline void validate(const ao_settings& s)
@@ -494,6 +517,7 @@ inline void validate(const ao_settings& s)
     validate(s.vbao, "vbao");
     validate(s.sao, "sao");
     validate(s.blur, "blur");
+    validate(s.finalize, "finalize");
 }
 
 } // namespace aogen

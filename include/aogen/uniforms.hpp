@@ -2,9 +2,9 @@
 //
 // Each pass reads its settings and camera from one uniform block. This header holds
 // the blocks' descriptions (for layout.hpp and declare.hpp) and packs a pass's params
-// (params.hpp), camera, kernel and frame rotation (temporal.hpp) into the block's bytes
-// under any rule set, so the same numbers reach a Vulkan std140 buffer, a D3D cbuffer or a
-// WebGPU uniform:
+// (params.hpp), camera, kernel and extras (the frame's turn of the noise, temporal.hpp; the
+// finalize step's albedo) into the block's bytes under any rule set, so the same numbers
+// reach a Vulkan std140 buffer, a D3D cbuffer or a WebGPU uniform:
 //
 //     aogen::uniforms::camera cam{world_to_view, aogen::perspective(0.577f, 16 / 9.f, 0.1f, 100)};
 //     auto kernel = aogen::kernel::crytek(16, 1);
@@ -40,19 +40,27 @@ struct camera {
     mat4 proj; // view → clip, see math.hpp for the conventions
 };
 
-// The rotation of a still frame, frame 0 (temporal.hpp): every pack_* below takes it unless
-// given another frame's.
+// The rotation of a still frame, frame 0 (temporal.hpp).
 inline constexpr vec2 still_frame{1.0f, 0.0f};
 
+// What the blocks carry besides the camera and each pass's own settings: this frame's turn
+// of the noise (AO passes: temporal::frame_rotation; (1, 0) at frame 0, the still frame) and
+// the finalize step's settings (every pass: read by the last pass of a -mb variant).
+struct extras {
+    vec2 frame_rotation = still_frame;
+    finalize_params finalize;
+};
+
 // Members every AO pass block starts with: the projection both ways, the normal
-// transform, the sizes that map a pixel to the noise tile and to uv, and this frame's turn
-// of the noise (temporal::frame_rotation; (1, 0) at frame 0).
+// transform, the sizes that map a pixel to the noise tile and to uv, this frame's turn of
+// the noise and the finalize step's albedo (extras).
 inline std::vector<layout::member_desc> camera_members()
 {
     return {{"proj", "mat4"},          {"inv_proj", "mat4"},   {"world_to_view", "mat4"},
             {"noise_scale", "vec2"},   // AO target size / noise tile size
             {"texel_size", "vec2"},    // 1 / AO target size
-            {"frame_rotation", "vec2"}}; // (cos, sin) of this frame's turn of the noise
+            {"frame_rotation", "vec2"}, // (cos, sin) of this frame's turn of the noise
+            {"albedo", "float"}};       // finalize_params::albedo
 }
 
 inline layout::block_desc ssao_block(int samples)
@@ -92,11 +100,12 @@ inline layout::block_desc sao_block(int taps)
 }
 
 // The blur passes: the inverse projection turns raw depth into view-space depth for the
-// linear depth term; raw_depth_k is the seed-exact term's factor (1000).
+// linear depth term; raw_depth_k is the seed-exact term's factor (1000); albedo is the
+// finalize step's (a -mb variant whose last pass this is).
 inline layout::block_desc blur_block()
 {
     return {{"BlurUniforms",
-             {{"inv_proj", "mat4"}, {"texel_size", "vec2"}, {"raw_depth_k", "float"}, {"linear_sharpness", "float"}}},
+             {{"inv_proj", "mat4"}, {"texel_size", "vec2"}, {"raw_depth_k", "float"}, {"linear_sharpness", "float"}, {"albedo", "float"}}},
             {}};
 }
 
@@ -110,8 +119,9 @@ inline layout::block_desc pointcloud_block()
 
 namespace detail {
 
-inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, int noise_size, vec2 frame_rotation)
+inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, int noise_size, const extras& e)
 {
+    validate(e.finalize);
     require_finite_above("uniforms target width", target_size.x, 0, 65536);
     require_finite_above("uniforms target height", target_size.y, 0, 65536);
     w.set("proj", cam.proj);
@@ -119,23 +129,24 @@ inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, i
     w.set("world_to_view", cam.world_to_view);
     w.set("noise_scale", vec2{target_size.x / noise_size, target_size.y / noise_size});
     w.set("texel_size", vec2{1.0f / target_size.x, 1.0f / target_size.y});
-    w.set("frame_rotation", frame_rotation);
+    w.set("frame_rotation", e.frame_rotation);
+    w.set("albedo", e.finalize.albedo);
 }
 
 } // namespace detail
 
 // SsaoUniforms bytes. `kernel` holds the variant's samples (its size is the block's N, in
 // variant::ssao_samples_range); `target_size` is the AO target's size in pixels (half the
-// screen at half resolution); `frame_rotation` is temporal::frame_rotation's for the frame.
+// screen at half resolution); `e` the frame's turn of the noise and the finalize settings.
 inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, const std::vector<vec4>& kernel,
-                                      vec2 target_size, layout::rules rules, vec2 frame_rotation = still_frame)
+                                      vec2 target_size, layout::rules rules, const extras& e = {})
 {
     validate(p);
     const int_range n = variant::ssao_samples_range;
     if (kernel.size() < size_t(n.lo) || kernel.size() > size_t(n.hi))
         fail("ssao kernel", std::to_string(kernel.size()) + " samples given", "valid: " + to_string(n) + " samples, the variant's ssao_samples");
     layout::writer w(layout::compute(ssao_block(int(kernel.size())), rules));
-    detail::set_camera(w, cam, target_size, p.noise_size, frame_rotation);
+    detail::set_camera(w, cam, target_size, p.noise_size, e);
     w.set("radius", p.radius);
     w.set("bias", p.bias);
     w.set("strength", p.strength);
@@ -148,11 +159,11 @@ inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, c
 // SaoUniforms bytes for a spiral of `taps` (the variant's ssao_samples); SAO's noise is a
 // rotation per pixel, like GTAO's.
 inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int taps, vec2 target_size, layout::rules rules,
-                                     int noise_size = 4, vec2 frame_rotation = still_frame)
+                                     int noise_size = 4, const extras& e = {})
 {
     validate(p);
     layout::writer w(layout::compute(sao_block(taps), rules));
-    detail::set_camera(w, cam, target_size, noise_size, frame_rotation);
+    detail::set_camera(w, cam, target_size, noise_size, e);
     w.set("radius", p.radius);
     w.set("bias", p.bias);
     w.set("intensity", p.intensity);
@@ -163,11 +174,11 @@ inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int
 
 // GtaoUniforms bytes; GTAO uses no noise tile of its own beyond a 4×4 rotation.
 inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
-                                      int noise_size = 4, vec2 frame_rotation = still_frame)
+                                      int noise_size = 4, const extras& e = {})
 {
     validate(p);
     layout::writer w(layout::compute(gtao_block(), rules));
-    detail::set_camera(w, cam, target_size, noise_size, frame_rotation);
+    detail::set_camera(w, cam, target_size, noise_size, e);
     w.set("radius", p.radius);
     w.set("thickness_bias", p.thickness_bias);
     w.set("strength", p.strength);
@@ -178,21 +189,23 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
 
 // VbaoUniforms bytes; like GTAO, a 4×4 rotation tile unless told.
 inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
-                                      int noise_size = 4, vec2 frame_rotation = still_frame)
+                                      int noise_size = 4, const extras& e = {})
 {
     validate(p);
     layout::writer w(layout::compute(vbao_block(), rules));
-    detail::set_camera(w, cam, target_size, noise_size, frame_rotation);
+    detail::set_camera(w, cam, target_size, noise_size, e);
     w.set("radius", p.radius);
     w.set("thickness", p.thickness * p.radius); // at most 1e8: finite
     w.set("strength", p.strength);
     return w.bytes();
 }
 
-// BlurUniforms bytes; `target_size` is the AO target's size in pixels.
-inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, vec2 target_size, layout::rules rules)
+// BlurUniforms bytes; `target_size` is the AO target's size in pixels; of `e`, the finalize
+// settings (a blur pass turns no noise).
+inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, vec2 target_size, layout::rules rules, const extras& e = {})
 {
     validate(p);
+    validate(e.finalize);
     require_finite_above("uniforms target width", target_size.x, 0, 65536);
     require_finite_above("uniforms target height", target_size.y, 0, 65536);
     layout::writer w(layout::compute(blur_block(), rules));
@@ -200,6 +213,7 @@ inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, ve
     w.set("texel_size", vec2{1.0f / target_size.x, 1.0f / target_size.y});
     w.set("raw_depth_k", p.raw_depth_k);
     w.set("linear_sharpness", p.linear_sharpness);
+    w.set("albedo", e.finalize.albedo);
     return w.bytes();
 }
 

@@ -20,7 +20,8 @@
 //   ours smooth ones), `fp16` (16-bit arithmetic in the AO pass), `nearest`
 //   (a half-resolution target left for the caller to upsample), `mip5` (a depth MIP chain of
 //   5 levels, read by far taps: depth_mips.hpp), `deint` (the AO pass dispatched as 4 x 4
-//   interleaved layers), `wg16x16` (workgroup size).
+//   interleaved layers), `mb` (multi-bounce in the last pass's finalize step),
+//   `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -102,6 +103,10 @@ struct variant {
     // rendering (Bavoil 2014) without splitting the depth buffer: every pixel reads what it
     // read before, so the output is the same bit for bit. Workgroup sides a multiple of 4.
     bool deinterleaved = false;
+    // Multi-bounce: the chain's last pass brightens the AO it writes by the inter-reflections
+    // of surfaces of albedo finalize_params::albedo (the GTAO paper's fit, common/core.glsl's
+    // ao_multi_bounce). Every technique. DESIGN.md default: off.
+    bool multi_bounce = false;
 };
 
 // The side of the pixel lattice a deinterleaved AO pass walks one layer of: the side of the
@@ -258,6 +263,7 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
     choice("PASS", names::name_of(pass_kind_names, pass, "pass"));
     if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
     if (pass == pass_kind::ao && v.deinterleaved) count("AO_DEINTERLEAVED_LAYERS", deinterleaved_layers);
+    if (v.multi_bounce && pass == passes(v).back()) d.push_back({"AO_MULTI_BOUNCE", ""}); // the finalize step of the last pass
     if (pass == pass_kind::ao) {
         choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
         choice("NORMALS", names::name_of(normal_source_names, v.normals, "normals"));
@@ -321,7 +327,7 @@ inline bool operator==(const variant& a, const variant& b)
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
            x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.decisions == y.decisions && x.fp16 == y.fp16 &&
-           x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved;
+           x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved && x.multi_bounce == y.multi_bounce;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -391,6 +397,7 @@ inline std::string name_of(const variant& input)
     if (v.upsample != d.upsample) name += "-nearest";
     if (v.depth_mips != d.depth_mips) name += "-mip" + std::to_string(v.depth_mips);
     if (v.deinterleaved) name += "-deint";
+    if (v.multi_bounce) name += "-mb";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -445,13 +452,14 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "fp16") v.fp16 = true;
         else if (x == "nearest") v.upsample = upsample_mode::nearest;
         else if (x == "deint") v.deinterleaved = true;
+        else if (x == "mb") v.multi_bounce = true;
         else if (kind == "mip") {
             if ((v.depth_mips = detail::parse_count(x, 3)) < 0) fail(subject, quote(x) + " is not a depth MIP level count", "valid: mip2..mip5");
         } else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, mb, wg<X>x<Y>");
     }
     try {
         validate(v);

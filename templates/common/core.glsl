@@ -168,9 +168,44 @@ ao_half ao_atan2(ao_half y, ao_half x)
 }
 #endif
 
-// What a pass writes: finite and in [0, 1]. Anything else (a NaN from input the guards
-// did not foresee) becomes 1, no occlusion.
+#if defined(AO_MULTI_BOUNCE)
+// Multi-bounce (Jimenez et al. 2016, "Practical Real-Time Strategies for Accurate Indirect
+// Occlusion", eq. 10). AO counts light that reaches a point straight from the sky; light
+// that bounced off the occluders around it arrives too, the more so the higher their albedo
+// rho and the more of the sky they hide. The paper ray-traced that multi-bounce visibility
+// over many scenes and fitted it by a cubic in the single-bounce visibility v whose
+// coefficients are linear in rho:
+//     a = 2.0404 rho - 0.3324,  b = -4.7951 rho + 0.6417,  c = 2.7552 rho + 0.6903,
+//     multi-bounce visibility = max(v, ((v a + b) v + c) v).
+// At v = 1 the cubic is a + b + c = 0.9996 + 0.0005 rho: an open pixel stays 1 (the max),
+// and the clamp keeps the rounding at rho = 1 from passing it. At rho = 0 the cubic lies
+// under v but near v = 0.97, where it passes it by 1.3e-6: the output is v to far below
+// an 8-bit step.
+float ao_multi_bounce(float v, float albedo)
+{
+    float a = 2.0404 * albedo - 0.3324;
+    float b = -4.7951 * albedo + 0.6417;
+    float c = 2.7552 * albedo + 0.6903;
+    return clamp(max(v, ((v * a + b) * v + c) * v), 0.0, 1.0);
+}
+#endif
+
+// An AO value made safe to write or to read: finite and in [0, 1]. Anything else (a NaN from
+// input the guards did not foresee) becomes 1, no occlusion. Passes apply it to what they
+// read from the pass before, too.
 float ao_finalize(float ao)
 {
     return ao_is_finite(ao) ? clamp(ao, 0.0, 1.0) : 1.0;
+}
+
+// What a pass writes (the entry points): ao_finalize's value, and in the chain's last pass
+// of a -mb variant (AO_MULTI_BOUNCE) the multi-bounce light for u.albedo (finalize_params)
+// on top -- once, on what the renderer reads, never on what a later pass would filter.
+float ao_output(float ao)
+{
+    float v = ao_finalize(ao);
+#if defined(AO_MULTI_BOUNCE)
+    v = ao_multi_bounce(v, u.albedo);
+#endif
+    return v;
 }

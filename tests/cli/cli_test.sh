@@ -207,6 +207,15 @@ assert why['world-to-view normal rotation'] == 'the G-buffer normals are already
 import json; names = [v['name'] for v in json.load(open('$work/spec/manifest.json'))['variants']]
 assert len(names) == 5 and 'ssao-s8-half-box-gbufworld-std-persp-cs' in names, names
 "
+  # multi_bounce: a spec key for the -mb extra; its values are on and off.
+  printf '{"matrices": [{"technique": ["gtao"], "blur": ["denoise"], "multi_bounce": ["off", "on"]}]}' >"$in/mb_spec.json"
+  "$aogen" generate --quiet --out "$work/mb" --targets spv --variants "$in/mb_spec.json"
+  check "a spec's multi_bounce makes the -mb twin" python3 -c "
+import json; names = [v['name'] for v in json.load(open('$work/mb/manifest.json'))['variants']]
+assert names == ['gtao-2x3-half-denoise-gbufworld-std-persp-cs', 'gtao-2x3-half-denoise-gbufworld-std-persp-cs-mb'], names
+"
+  printf '{"matrices": [{"multi_bounce": ["yes"]}]}' >"$in/bad_mb_spec.json"
+  expect_error "multi_bounce neither on nor off" "matrices\[0\].multi_bounce\[0\].*on.*off" generate --variants "$in/bad_mb_spec.json" --out gen
   expect_error "unknown variant" "'blurry' is not a known name" generate --out gen ssao-s16-half-blurry-gbufworld-std-persp-cs
   expect_error "unknown target" "--targets: 'dxil' is not a known name.*valid: spv" generate --targets spv,dxil --out gen
   printf '{"matrices": [{"samples": [0]}]}' >"$in/bad_spec.json"

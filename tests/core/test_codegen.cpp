@@ -52,7 +52,10 @@ std::vector<variant> broad_set()
                              // SAO (not a matrix axis here, to keep the set's size): both stages, every
                              // normal source, depth convention and projection, one with a chain
                              "sao-s16-half-bilateral-gbufworld-std-persp-cs", "sao-s1-full-noblur-recon-revinf-ortho-fs",
-                             "sao-s8-half-denoise-gbufview-rev-persp-cs-mip3-deint", "sao-s32-full-box-gbufworld-std-ortho-fs"})
+                             "sao-s8-half-denoise-gbufview-rev-persp-cs-mip3-deint", "sao-s32-full-box-gbufworld-std-ortho-fs",
+                             // multi-bounce in every kind of last pass: AO, blurs, upsample; both stages
+                             "gtao-2x3-full-noblur-gbufworld-std-persp-cs-mb", "ssao-s16-half-bilateral-gbufworld-std-persp-fs-mb",
+                             "vbao-2x3-half-denoise-recon-std-persp-cs-nearest-mb", "sao-s16-full-box-gbufworld-std-persp-fs-mb"})
         vs.push_back(variant_from_name(name));
     return vs;
 }

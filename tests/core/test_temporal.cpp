@@ -40,7 +40,7 @@ size_t offset_of(const layout::block_desc& block, const std::string& member)
 
 } // namespace
 
-TEST_CASE("temporal: frame 0 is the still frame, (1, 0) to the bit, for every variant and sequence", "[temporal]")
+TEST_CASE("temporal: frame 0 is the still frame (1 and 0) to the bit for every variant and sequence", "[temporal]")
 {
     for (const char* name : {"gtao-2x3-half-bilateral-gbufworld-std-persp-cs", "vbao-7x3-full-noblur-recon-std-persp-cs",
                              "ssao-s16-half-bilateral-gbufworld-std-persp-cs", "sao-s16-half-denoise-gbufworld-std-persp-cs"})
@@ -54,7 +54,7 @@ TEST_CASE("temporal: frame 0 is the still frame, (1, 0) to the bit, for every va
         }
 }
 
-TEST_CASE("temporal: van der Corput's offsets are the base-2 radical inverse, stratified at every power of two", "[temporal]")
+TEST_CASE("temporal: van der Corput's offsets are the base-2 radical inverse stratified at every power of two", "[temporal]")
 {
     // Written out: frame 1 = 0.1b, 2 = 0.01b, 3 = 0.11b, 4 = 0.001b, 5 = 0.101b, 6 = 0.011b, 7 = 0.111b.
     const double expected[8] = {0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875};
@@ -74,7 +74,7 @@ TEST_CASE("temporal: van der Corput's offsets are the base-2 radical inverse, st
     }
 }
 
-TEST_CASE("temporal: the golden ratio and white sequences stay in [0, 1) and repeat bit for bit", "[temporal]")
+TEST_CASE("temporal: the golden ratio and white sequences stay below 1 and repeat bit for bit", "[temporal]")
 {
     for (temporal::sequence s : {temporal::sequence::golden_ratio, temporal::sequence::white}) {
         std::set<double> seen;

@@ -76,16 +76,16 @@ TEST_CASE("seed 004's SsaoUniform bytes equal an independently assembled image",
 
 TEST_CASE("Taos SSAO block: sizes and offsets worked out from each rule set", "[uniforms]")
 {
-    // 3 mat4 (192 bytes), vec2 at 192, 200 and 208, five floats at 216..232, then vec4[16]:
-    // at 240 where a vec4 array aligns to 16, at 236 under scalar rules.
+    // 3 mat4 (192 bytes), vec2 at 192, 200 and 208, the albedo at 216, five floats at
+    // 220..236, then vec4[16] at 240 under every rule set (scalar rules too: 240 is where it ends).
     struct expectation { rules r; uint32_t kernel_offset, size; };
-    for (expectation e : {expectation{rules::std140, 240, 496}, {rules::std430, 240, 496}, {rules::scalar, 236, 492},
+    for (expectation e : {expectation{rules::std140, 240, 496}, {rules::std430, 240, 496}, {rules::scalar, 240, 496},
                           {rules::wgsl_uniform, 240, 496}, {rules::hlsl_cbuffer, 240, 496}, {rules::msl, 240, 496}}) {
         INFO(layout::to_name(e.r));
         const layout::struct_layout l = layout::compute(uniforms::ssao_block(16), e.r);
         CHECK(l.size == e.size);
         CHECK(layout::find(l, "kernel")->offset == e.kernel_offset);
-        CHECK(layout::find(l, "intensity")->offset == 232);
+        CHECK(layout::find(l, "intensity")->offset == 236);
     }
 }
 
@@ -106,34 +106,34 @@ TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[unifor
     CHECK(float_at(bytes, 200) == 1.0f / 960.0f);      // texel_size
     CHECK(float_at(bytes, 208) == 1.0f);               // frame_rotation: the still frame (1, 0)
     CHECK(float_at(bytes, 212) == 0.0f);
-    CHECK(float_at(bytes, 216) == 0.5f);               // radius
-    CHECK(float_at(bytes, 220) == 0.025f);             // bias
-    CHECK(float_at(bytes, 224) == 1.0f);               // strength
+    CHECK(float_at(bytes, 216) == 0.5f);               // albedo: finalize_params' default
+    CHECK(float_at(bytes, 220) == 0.5f);               // radius
+    CHECK(float_at(bytes, 224) == 0.025f);             // bias
+    CHECK(float_at(bytes, 228) == 1.0f);               // strength
     for (int i = 0; i < 16; ++i) {
         CHECK(float_at(bytes, 240 + 16 * i) == kernel[i].x);
         CHECK(float_at(bytes, 240 + 16 * i + 8) == kernel[i].z);
     }
-    for (size_t pad = 236; pad < 240; ++pad) CHECK(bytes[pad] == 0);
 }
 
 TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[uniforms]")
 {
-    // 216 bytes of camera members, then five floats: 236, padded to a vec4 under std140 and cbuffer rules.
+    // 220 bytes of camera members, then five floats: 240 under every rule set.
     CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 240);
-    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 236);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 240);
     CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 240);
     const std::vector<uint8_t> bytes =
         uniforms::pack_gtao(presets::taos_gtao().settings.gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
-    CHECK(float_at(bytes, 216) == 1.0f);  // radius (seed 001)
-    CHECK(float_at(bytes, 220) == 0.1f);  // thickness bias
-    CHECK(float_at(bytes, 224) == 2.0f);  // strength exponent
-    CHECK(float_at(bytes, 228) == 0.0f);  // falloff range: seed 001's hard cut-off
-    CHECK(float_at(bytes, 232) == 0.0f);  // thin-occluder compensation: none
+    CHECK(float_at(bytes, 220) == 1.0f);  // radius (seed 001)
+    CHECK(float_at(bytes, 224) == 0.1f);  // thickness bias
+    CHECK(float_at(bytes, 228) == 2.0f);  // strength exponent
+    CHECK(float_at(bytes, 232) == 0.0f);  // falloff range: seed 001's hard cut-off
+    CHECK(float_at(bytes, 236) == 0.0f);  // thin-occluder compensation: none
     gtao_params g = presets::taos_gtao().settings.gtao;
     g.falloff_range = 0.625f, g.thin_occluder = 1.5f;
     const std::vector<uint8_t> tuned = uniforms::pack_gtao(g, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
-    CHECK(float_at(tuned, 228) == 0.625f);
-    CHECK(float_at(tuned, 232) == 1.5f);
+    CHECK(float_at(tuned, 232) == 0.625f);
+    CHECK(float_at(tuned, 236) == 1.5f);
 }
 
 TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, strength", "[uniforms]")
@@ -141,17 +141,17 @@ TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, str
     const layout::struct_layout l = layout::compute(uniforms::vbao_block(), rules::std140);
     CHECK(l.size == 240);
     CHECK(l.name == "VbaoUniforms");
-    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 228);
+    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 232);
     vbao_params p;
     p.radius = 2.0f, p.thickness = 0.25f, p.strength = 1.5f;
     const std::vector<uint8_t> bytes = uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
     REQUIRE(bytes.size() == 240);
     CHECK(float_at(bytes, 192) == 240.0f); // noise_scale: a 4×4 tile
     CHECK(float_at(bytes, 208) == 1.0f);   // frame_rotation: the still frame
-    CHECK(float_at(bytes, 216) == 2.0f);   // radius
-    CHECK(float_at(bytes, 220) == 0.5f);   // thickness: 0.25 of the radius, in world units
-    CHECK(float_at(bytes, 224) == 1.5f);   // strength
-    for (size_t pad = 228; pad < 240; ++pad) CHECK(bytes[pad] == 0);
+    CHECK(float_at(bytes, 220) == 2.0f);   // radius
+    CHECK(float_at(bytes, 224) == 0.5f);   // thickness: 0.25 of the radius, in world units
+    CHECK(float_at(bytes, 228) == 1.5f);   // strength
+    for (size_t pad = 232; pad < 240; ++pad) CHECK(bytes[pad] == 0);
     p.thickness = -1;
     CHECK_THROWS_WITH(uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140), Catch::Contains("vbao.thickness"));
 }
@@ -167,10 +167,10 @@ TEST_CASE("SAO block: GTAO's camera, then radius, bias, intensity, contrast and 
     REQUIRE(bytes.size() == 304);
     CHECK(float_at(bytes, 192) == 240.0f); // noise_scale: a 4×4 tile
     CHECK(float_at(bytes, 208) == 1.0f);   // frame_rotation: the still frame
-    CHECK(float_at(bytes, 216) == 2.0f);   // radius
-    CHECK(float_at(bytes, 220) == 0.125f); // bias, a share of the radius
-    CHECK(float_at(bytes, 224) == 1.5f);   // intensity
-    CHECK(float_at(bytes, 228) == 0.75f);  // contrast
+    CHECK(float_at(bytes, 220) == 2.0f);   // radius
+    CHECK(float_at(bytes, 224) == 0.125f); // bias, a share of the radius
+    CHECK(float_at(bytes, 228) == 1.5f);   // intensity
+    CHECK(float_at(bytes, 232) == 0.75f);  // contrast
     const std::vector<vec4> spiral = spiral::taps(4);
     for (size_t i = 0; i < 4; ++i) {
         CHECK(float_at(bytes, 240 + 16 * i) == spiral[i].x);

@@ -34,14 +34,14 @@ using namespace aogen;
 // on Vulkan and flipped an SSAO vote (8/255) and a VBAO sector (4/255): common/core.glsl's
 // ao_lerp. Then fragment variants: the seeds' four (the default matrix's fragment variants)
 // and three with the upsample, the denoise and VBAO, drawn as fullscreen triangles. Last, SAO
-// in each stage.
+// in each stage. Two carry multi-bounce (-mb), in an AO pass and in a fragment blur.
 inline const char* const emitted_target_variants[] = {
     "ssao-s16-half-bilateral-gbufworld-std-persp-cs",
     "ssao-s8-full-box-recon-std-persp-cs",
     "gtao-2x3-half-bilateral-gbufworld-std-persp-cs",
     "gtao-4x4-full-denoise-gbufview-std-persp-cs",
     "gtao-2x2-half-denoise-gbufworld-std-persp-cs",
-    "gtao-1x2-half-noblur-gbufworld-std-persp-cs-nearest",
+    "gtao-1x2-half-noblur-gbufworld-std-persp-cs-nearest-mb",
     "vbao-3x3-half-bilateral-gbufworld-std-persp-cs",
     "ssao-s64-full-noblur-recon-std-persp-cs-pc-rc004",
     "ssao-s32-full-noblur-gbufworld-std-persp-cs",
@@ -52,7 +52,7 @@ inline const char* const emitted_target_variants[] = {
     "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004",
     "ssao-s16-half-bilateral-gbufworld-std-persp-fs",
     "gtao-2x3-half-denoise-gbufworld-std-persp-fs",
-    "vbao-2x2-full-box-recon-std-persp-fs",
+    "vbao-2x2-full-box-recon-std-persp-fs-mb",
     "sao-s16-half-denoise-gbufworld-std-persp-cs",
     "sao-s8-full-noblur-recon-std-persp-fs"};
 

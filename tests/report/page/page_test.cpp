@@ -467,7 +467,7 @@ TEST_CASE("page: the plot's labels collide with nothing on a crowded front")
     for (size_t i = 0; i < 40; ++i) {
         const double ms = 2.0 * std::pow(1.025, double(i)), error = 0.09 - 0.0008 * double(i);
         const std::string name = "gtao-" + std::to_string(i % 4 + 1) + "x" + std::to_string(i / 4 + 1) + "-half-denoise-gbufworld-std-persp-cs";
-        points.push_back({i, name, aogen_report::plot_label(name), "gtao", "compute", ms, ms * 0.95, ms * 1.05, error, error, true, true});
+        points.push_back({i, name, aogen_report::plot_label(name), "gtao", "compute", ms, ms * 0.95, ms * 1.05, error, error, error, true, true, true});
     }
     scratch s;
     aogen::tools::write_file(s.dir / "plot.svg", aogen_report::error_time_svg(points, "crowded"));

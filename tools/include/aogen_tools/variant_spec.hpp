@@ -11,7 +11,8 @@
 //   decisions (smooth|step: SSAO's per-sample decisions, variant extra -step),
 //   precision (fp32|fp16: 16-bit arithmetic in the AO pass, variant extra -fp16),
 //   upsample (depth_aware|nearest: how a half-resolution target reaches the screen,
-//   variant extra -nearest).
+//   variant extra -nearest), multi_bounce (off|on: the last pass's multi-bounce, variant
+//   extra -mb).
 //
 // A scene file (`--scene SCENE.json`) says what the renderer has and needs:
 //   {"normals": "gbuffer_world" | "gbuffer_view" | "reconstructed", "point_clouds": false,
@@ -110,7 +111,7 @@ inline void require_axes_used(const json_reader& in, const std::vector<technique
 inline variant_matrix matrix_from_json(const json_reader& in)
 {
     in.only_keys({"technique", "samples", "slices", "steps", "blur", "bilateral_depth", "normals", "point_cloud",
-                  "depth", "projection", "resolution", "stage", "range_check", "output", "decisions", "precision", "upsample"});
+                  "depth", "projection", "resolution", "stage", "range_check", "output", "decisions", "precision", "upsample", "multi_bounce"});
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
     require_axes_used(in, m.techniques);
@@ -130,6 +131,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     if (in.has("decisions")) m.decisions = name_list(in, "decisions", ssao_decisions_names);
     if (in.has("precision")) m.fp16 = bool_list(in, "precision", "fp16", "fp32");
     if (in.has("upsample")) m.upsample = name_list(in, "upsample", upsample_mode_names);
+    if (in.has("multi_bounce")) m.multi_bounce = bool_list(in, "multi_bounce", "on", "off");
     return m;
 }
 
