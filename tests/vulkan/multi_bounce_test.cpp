@@ -4,8 +4,10 @@
 //     a = 2.0404 rho - 0.3324, b = -4.7951 rho + 0.6417, c = 2.7552 rho + 0.6903,
 //     out = max(v, ((v a + b) v + c) v).
 // The oracle is the twin without -mb, whose output is v itself rounded to 8 bits: every
-// pixel of the -mb chain must be the fit of it, within what the two roundings allow (half
-// a step of the output, and the fit's change over half a step of its input). Whichever pass
+// pixel of the -mb chain must be the fit of it, within what the two roundings allow — a step
+// of the output, and the fit's change over a step of its input: Vulkan lets a device round a
+// float to 8-bit UNORM to either neighbour (NVIDIA's H100 is 0.01/255 past half a step on a
+// few pixels; lavapipe rounds to nearest). Whichever pass
 // is last — the AO pass, a blur, the upsample; compute or fragment — and for albedos 0 to 1.
 // Background stays exactly 1. The check can fail: the fit with the albedo read as 1 - rho
 // is outside its bounds.
@@ -26,13 +28,13 @@ double paper_fit(double v, double rho)
 // How many pixels of `with_mb` lie outside the fit of `twin` at albedo `rho`.
 size_t outside_the_fit(const std::vector<float>& twin, const std::vector<float>& with_mb, double rho, double* worst = nullptr)
 {
-    const double half_step = 0.5 / 255.0;
+    const double step = 1.0 / 255.0;
     size_t outside = 0;
     for (size_t i = 0; i < twin.size(); ++i) {
         const double v = twin[i], expected = paper_fit(v, rho);
-        const double input_slack = std::max(std::fabs(paper_fit(std::min(v + half_step, 1.0), rho) - expected),
-                                            std::fabs(paper_fit(std::max(v - half_step, 0.0), rho) - expected));
-        const double off = std::fabs(with_mb[i] - expected) - (half_step + input_slack + 1e-6);
+        const double input_slack = std::max(std::fabs(paper_fit(std::min(v + step, 1.0), rho) - expected),
+                                            std::fabs(paper_fit(std::max(v - step, 0.0), rho) - expected));
+        const double off = std::fabs(with_mb[i] - expected) - (step + input_slack + 1e-6);
         if (worst) *worst = std::max(*worst, off);
         outside += off > 0;
     }
