@@ -69,7 +69,8 @@ std::string file_stem(const std::string& name)
 }
 
 // Per scene, the variants Pareto-optimal on it by time and calibrated error (fastest
-// first, at most 8): reference | variant | |error|.
+// first, at most 8): reference | variant | |error|; then each variant's bent normals that has
+// them: reference | variant | angle.
 std::map<std::string, aogen_report::strip_file> add_strips(const aogen_report::report_data& d, aogen::tools::file_set& out)
 {
     std::map<std::string, aogen_report::strip_file> files;
@@ -96,6 +97,15 @@ std::map<std::string, aogen_report::strip_file> add_strips(const aogen_report::r
             strip.add_row(scene.truth.ao, v.runs[s].ao.full(scene.truth.width, scene.truth.height), scene.truth.valid,
                           aogen_report::strip_label(v.name, ms[k], v.runs[s].plain.rmse));
             file.variants.push_back(v.name);
+        }
+        // Then every variant with bent normals (-bn), fastest first: reference | variant | angle.
+        for (size_t k = 0; k < order.size(); ++k) {
+            const aogen_report::variant_record& v = d.variants[order[k]];
+            const aogen_report::run_record& r = v.runs[s];
+            if (!r.ran() || r.bent_normal_rgb.empty()) continue;
+            strip.add_bent_normal_row(scene.truth.bent_normal, aogen_report::normals_of_bytes(r.bent_normal_rgb), scene.truth.valid,
+                                      aogen_report::bent_strip_label(v.name, r.bent.mean_degrees));
+            file.variants.push_back(v.name + " (bent normal)");
         }
         if (file.variants.empty()) continue;
         out.add(file.path, aogen_report::encode_png(strip.image()));

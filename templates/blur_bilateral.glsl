@@ -39,9 +39,10 @@
 const float AO_BLUR_WEIGHTS[4] = float[4](AO_BLUR_WEIGHT_0, AO_BLUR_WEIGHT_1, AO_BLUR_WEIGHT_2, AO_BLUR_WEIGHT_3);
 
 // The AO input at target pixel p (inside the target), made finite and in [0, 1].
-float ao_blur_input(ivec2 p)
+// The AO (with bent normals, and the normal: common/core.glsl's ao_value) at target pixel p.
+ao_value ao_blur_input(ivec2 p)
 {
-    return ao_finalize(texelFetch(u_ao_input, p, 0).r);
+    return ao_read_input(p);
 }
 
 // The quantity the depth term compares, for a full-resolution pixel with depth `depth`.
@@ -54,13 +55,13 @@ float ao_blur_depth_key(ivec2 full_pixel, float depth)
 #endif
 }
 
-float ao_pass(ivec2 p)
+ao_value ao_pass(ivec2 p)
 {
     ivec2 full = ao_full_pixel(p);
     float depth = ao_load_depth(full);
-    if (ao_is_background(depth)) return 1.0;
+    if (ao_is_background(depth)) return ao_open_value();
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
-    float centre = ao_blur_input(clamp(p, ivec2(0), size - 1));
+    ao_value centre = ao_blur_input(clamp(p, ivec2(0), size - 1));
     float key = ao_blur_depth_key(full, depth);
     if (!ao_is_finite(key)) return centre;
 #if defined(AO_BILATERAL_DEPTH_SEED_RAW)
@@ -68,7 +69,7 @@ float ao_pass(ivec2 p)
 #else
     float k = u.linear_sharpness;
 #endif
-    float sum = AO_BLUR_WEIGHTS[0] * centre;
+    ao_value sum = AO_BLUR_WEIGHTS[0] * centre;
     float weight_sum = AO_BLUR_WEIGHTS[0];
     for (int i = 1; i <= 3; ++i) {
         for (int side = -1; side <= 1; side += 2) {

@@ -19,20 +19,20 @@
 
 // u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
-float ao_pass(ivec2 p)
+ao_value ao_pass(ivec2 p)
 {
-    if (ao_is_background(ao_load_depth(ao_full_pixel(p)))) return 1.0;
+    if (ao_is_background(ao_load_depth(ao_full_pixel(p)))) return ao_open_value();
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
     const int first = -(AO_BLUR_BOX_SIZE / 2);
-    float sum = 0.0;
+    ao_value sum = ao_value(0.0); // with bent normals, their sum too (common/core.glsl's ao_value)
     float count = 0.0;
     for (int y = first; y < first + AO_BLUR_BOX_SIZE; ++y) {
         for (int x = first; x < first + AO_BLUR_BOX_SIZE; ++x) {
             ivec2 q = p + ivec2(x, y);
             if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
-            sum += ao_finalize(texelFetch(u_ao_input, q, 0).r);
+            sum += ao_read_input(q);
             count += 1.0;
         }
     }
-    return count > 0.0 ? sum / count : 1.0;
+    return count > 0.0 ? sum / count : ao_open_value();
 }

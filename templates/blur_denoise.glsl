@@ -82,14 +82,28 @@ float ao_denoise_edge(vec2 a, vec2 b)
     return exp(-abs(a.y - b.y) * u.linear_sharpness);
 }
 
+// The bent normal of target pixel q (a -bn variant's: common/core.glsl's ao_value), zero off
+// the target. Read only where ao_denoise_tap says q is a tap.
+vec3 ao_denoise_tap_bent(ivec2 q)
+{
+    ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
+    if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) return vec3(0.0);
+    return ao_value_bent(ao_read_input(q));
+}
+
 #if defined(AO_STAGE_COMPUTE)
 #define AO_TILE_WIDTH (AO_WORKGROUP_X + 2 * AO_DENOISE_RADIUS)
 #define AO_TILE_HEIGHT (AO_WORKGROUP_Y + 2 * AO_DENOISE_RADIUS)
 #define AO_PASS_LOADS_TILE
 // The taps of the group's pixels and of the radius around them, then the column sums of the
-// group's rows over the tile's width.
+// group's rows over the tile's width. With bent normals their normals and normal sums sit in
+// arrays of their own, so the AO's arithmetic is the same with them as without.
 shared vec2 ao_tile[AO_TILE_WIDTH * AO_TILE_HEIGHT];
 shared vec2 ao_columns[AO_TILE_WIDTH * AO_WORKGROUP_Y];
+#if defined(AO_BENT_NORMALS)
+shared vec3 ao_tile_bent[AO_TILE_WIDTH * AO_TILE_HEIGHT];
+shared vec3 ao_columns_bent[AO_TILE_WIDTH * AO_WORKGROUP_Y];
+#endif
 
 // The target pixel the tile's texel (0, 0) holds: the workgroup's first pixel - radius.
 ivec2 ao_tile_origin()
@@ -97,35 +111,54 @@ ivec2 ao_tile_origin()
     return ivec2(gl_WorkGroupID.xy) * ivec2(AO_WORKGROUP_X, AO_WORKGROUP_Y) - ivec2(AO_DENOISE_RADIUS);
 }
 
-// The tap at target pixel q, inside this group's tile.
-vec2 ao_denoise_read(ivec2 q)
+// Where target pixel q, inside this group's tile, is in it.
+int ao_tile_index(ivec2 q)
 {
     ivec2 t = q - ao_tile_origin();
-    return ao_tile[t.y * AO_TILE_WIDTH + t.x];
+    return t.y * AO_TILE_WIDTH + t.x;
 }
+
+// The tap at target pixel q, inside this group's tile, and its bent normal.
+vec2 ao_denoise_read(ivec2 q) { return ao_tile[ao_tile_index(q)]; }
+#if defined(AO_BENT_NORMALS)
+vec3 ao_denoise_read_bent(ivec2 q) { return ao_tile_bent[ao_tile_index(q)]; }
+#else
+vec3 ao_denoise_read_bent(ivec2 q) { return vec3(0.0); }
+#endif
 #else
 vec2 ao_denoise_read(ivec2 q)
 {
     return ao_denoise_tap(q);
 }
+vec3 ao_denoise_read_bent(ivec2 q)
+{
+    return ao_denoise_tap_bent(q);
+}
 #endif
 
 // Column c's sum: (sum of w * ao, sum of w) over the taps c + (0, dy), |dy| <= radius, w the
-// product of the edges from c to the tap times AO_DENOISE_WEIGHTS[|dy|]; (0, 0) when c is no tap.
-vec2 ao_denoise_column(ivec2 c)
+// product of the edges from c to the tap times AO_DENOISE_WEIGHTS[|dy|]; (0, 0) when c is no
+// tap. `bent`: the sum of w * bent normal over the same taps (zero without bent normals).
+vec2 ao_denoise_column(ivec2 c, out vec3 bent)
 {
+    bent = vec3(0.0);
     vec2 centre = ao_denoise_read(c);
     if (centre.x < 0.0) return vec2(0.0);
     vec2 sum = AO_DENOISE_WEIGHTS[0] * vec2(centre.x, 1.0);
+    bent = AO_DENOISE_WEIGHTS[0] * ao_denoise_read_bent(c);
     for (int side = -1; side <= 1; side += 2) {
         vec2 previous = centre;
         float path = 1.0;
         for (int d = 1; d <= AO_DENOISE_RADIUS; ++d) {
-            vec2 tap = ao_denoise_read(c + ivec2(0, side * d));
+            ivec2 q = c + ivec2(0, side * d);
+            vec2 tap = ao_denoise_read(q);
             path *= ao_denoise_edge(previous, tap);
             previous = tap;
             float w = AO_DENOISE_WEIGHTS[d] * path;
-            if (w > 0.0) sum += w * vec2(tap.x, 1.0); // 0: cut or underflowed
+            if (w > 0.0) { // 0: cut or underflowed
+                sum += w * vec2(tap.x, 1.0);
+                bent += w * ao_denoise_read_bent(q);
+            }
         }
     }
     return sum;
@@ -138,37 +171,56 @@ void ao_load_tile()
 {
     ivec2 origin = ao_tile_origin();
     const int group_size = AO_WORKGROUP_X * AO_WORKGROUP_Y;
-    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += group_size)
-        ao_tile[i] = ao_denoise_tap(origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH));
+    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += group_size) {
+        ivec2 q = origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH);
+        ao_tile[i] = ao_denoise_tap(q);
+#if defined(AO_BENT_NORMALS)
+        ao_tile_bent[i] = ao_denoise_tap_bent(q);
+#endif
+    }
     barrier();
-    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_WORKGROUP_Y; i += group_size)
-        ao_columns[i] = ao_denoise_column(origin + ivec2(i % AO_TILE_WIDTH, AO_DENOISE_RADIUS + i / AO_TILE_WIDTH));
+    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_WORKGROUP_Y; i += group_size) {
+        vec3 bent;
+        ao_columns[i] = ao_denoise_column(origin + ivec2(i % AO_TILE_WIDTH, AO_DENOISE_RADIUS + i / AO_TILE_WIDTH), bent);
+#if defined(AO_BENT_NORMALS)
+        ao_columns_bent[i] = bent;
+#endif
+    }
     barrier();
 }
 
-// The column sum at target pixel c, a pixel of the group's rows within the tile's width.
-vec2 ao_denoise_column_sum(ivec2 c)
+// The column sum at target pixel c, a pixel of the group's rows within the tile's width, and
+// its bent normals' sum.
+vec2 ao_denoise_column_sum(ivec2 c, out vec3 bent)
 {
     ivec2 t = c - ao_tile_origin() - ivec2(0, AO_DENOISE_RADIUS);
+#if defined(AO_BENT_NORMALS)
+    bent = ao_columns_bent[t.y * AO_TILE_WIDTH + t.x];
+#else
+    bent = vec3(0.0);
+#endif
     return ao_columns[t.y * AO_TILE_WIDTH + t.x];
 }
 #else
-vec2 ao_denoise_column_sum(ivec2 c)
+vec2 ao_denoise_column_sum(ivec2 c, out vec3 bent)
 {
-    return ao_denoise_column(c);
+    return ao_denoise_column(c, bent);
 }
 #endif
 
-float ao_pass(ivec2 p)
+ao_value ao_pass(ivec2 p)
 {
     vec2 centre = ao_denoise_read(p);
     if (centre.x < 0.0) {
         // Background writes exactly 1; a pixel whose view z is not finite keeps its own AO.
-        if (ao_is_background(ao_load_depth(ao_full_pixel(p)))) return 1.0;
-        return ao_finalize(texelFetch(u_ao_input, p, 0).r);
+        if (ao_is_background(ao_load_depth(ao_full_pixel(p)))) return ao_open_value();
+        return ao_read_input(p);
     }
-    // Along p's row: each column's sum, weighed by the edges from p to the column.
-    vec2 sum = AO_DENOISE_WEIGHTS[0] * ao_denoise_column_sum(p);
+    // Along p's row: each column's sum, weighed by the edges from p to the column; the bent
+    // normals' sums likewise (without bent normals they are zero and unused).
+    vec3 bent;
+    vec2 sum = AO_DENOISE_WEIGHTS[0] * ao_denoise_column_sum(p, bent);
+    vec3 bent_sum = AO_DENOISE_WEIGHTS[0] * bent;
     for (int side = -1; side <= 1; side += 2) {
         vec2 previous = centre;
         float path = 1.0;
@@ -178,8 +230,11 @@ float ao_pass(ivec2 p)
             path *= ao_denoise_edge(previous, tap);
             previous = tap;
             float w = AO_DENOISE_WEIGHTS[d] * path;
-            if (w > 0.0) sum += w * ao_denoise_column_sum(q);
+            if (w > 0.0) {
+                sum += w * ao_denoise_column_sum(q, bent);
+                bent_sum += w * bent;
+            }
         }
     }
-    return sum.y > 0.0 ? sum.x / sum.y : centre.x;
+    return ao_make_value(sum.y > 0.0 ? sum.x / sum.y : centre.x, bent_sum);
 }

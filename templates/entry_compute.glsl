@@ -12,7 +12,8 @@
 // format AO_OUTPUT_FORMAT (codegen::options::output_format): r8 (R8_UNORM, the default),
 // rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
 // written is ao_output(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
-// formats get (ao, 0, 0, 1).
+// formats get (ao, 0, 0, 1), or with AO_BENT_NORMALS (ao, encoded bent normal)
+// (common/core.glsl's ao_value and ao_output_texel).
 //
 // AO_DIAGNOSTICS (codegen::options::diagnostics) adds binding AO_BINDING_RAW, an r32f
 // storage image of the same size that receives ao_pass(pixel) itself, before the guard:
@@ -58,14 +59,14 @@ void main()
     ivec2 invocation = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(u_output);
     if (2 * invocation.x >= size.x || 2 * invocation.y >= size.y) return;
-    vec4 ao = ao_pass_quad(invocation);
+    ao_value4 ao = ao_pass_quad(invocation);
     for (int k = 0; k < 4; ++k) {
         ivec2 pixel = 2 * invocation + ivec2(k & 1, k >> 1);
         if (pixel.x >= size.x || pixel.y >= size.y) continue;
 #if defined(AO_DIAGNOSTICS)
-        imageStore(u_raw, pixel, vec4(ao[k]));
+        imageStore(u_raw, pixel, vec4(ao_value_ao(ao[k])));
 #endif
-        imageStore(u_output, pixel, vec4(ao_output(ao[k]), 0.0, 0.0, 1.0));
+        imageStore(u_output, pixel, ao_output_texel(ao[k]));
     }
 }
 #else
@@ -80,10 +81,10 @@ void main()
     ivec2 size = imageSize(u_output);
     ivec2 pixel = ao_invocation_pixel(ivec2(gl_GlobalInvocationID.xy), size);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
-    float ao = ao_pass(pixel);
+    ao_value ao = ao_pass(pixel);
 #if defined(AO_DIAGNOSTICS)
-    imageStore(u_raw, pixel, vec4(ao));
+    imageStore(u_raw, pixel, vec4(ao_value_ao(ao)));
 #endif
-    imageStore(u_output, pixel, vec4(ao_output(ao), 0.0, 0.0, 1.0));
+    imageStore(u_output, pixel, ao_output_texel(ao));
 }
 #endif

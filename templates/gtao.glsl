@@ -21,7 +21,9 @@
 //   3. horizon angles h+ = acos(cos+) in [0, pi], h- = -acos(cos-) in [-pi, 0], each
 //      clamped to [n - pi/2, n + pi/2] (the hemisphere around the normal);
 //   4. the slice integral a(h-, n) + a(h+, n) and its value for an unoccluded slice,
-//      cos n + n sin n (ao_gtao_slice_integral below; ao_slice_arc, ao_slice_unoccluded).
+//      cos n + n sin n (ao_gtao_slice_integral below; ao_slice_arc, ao_slice_unoccluded);
+//      with bent normals (-bn), the slice's bent vector between the horizons too
+//      (common/slices.glsl's ao_slice_bent and THE BENT NORMAL).
 // The visibility is sum |n_p| (a(h-, n) + a(h+, n)) / sum |n_p| (cos n + n sin n) over the
 // slices, raised to u.strength.
 //
@@ -122,26 +124,32 @@ float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, ve
     return ao_lerp(unoccluded, along_view / true_length, weight);
 }
 
-// The slice integral a(h-, n) + a(h+, n), without the |n_p| factor, from the horizon
-// cosines of the two sides (-1: no horizon) and the projected normal's angle n.
-ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_ahead)
+// The horizon angles (h-, h+) from the horizon cosines of the two sides (-1: no horizon),
+// clamped to the hemisphere around the projected normal's angle n (clamped to [-pi/2, pi/2]).
+ao_half2 ao_gtao_horizons(ao_half n, ao_half cos_behind, ao_half cos_ahead)
 {
     const ao_half half_pi = ao_half(AO_HALF_PI);
-    ao_half n = clamp(n_angle, -half_pi, half_pi);
     // ao_is_finite first: clamp() of a NaN is undefined; a NaN horizon is no horizon.
     ao_half c_ahead = ao_is_finite(float(cos_ahead)) ? clamp(cos_ahead, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
     ao_half c_behind = ao_is_finite(float(cos_behind)) ? clamp(cos_behind, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
     // h+ in [0, pi], h- in [-pi, 0]; the clamp keeps h- <= 0 <= h+, as n +- pi/2 straddle 0.
     ao_half h_ahead = clamp(ao_acos(c_ahead), n - half_pi, n + half_pi);
     ao_half h_behind = clamp(-ao_acos(c_behind), n - half_pi, n + half_pi);
-    return ao_slice_arc(h_behind, n) + ao_slice_arc(h_ahead, n);
+    return ao_half2(h_behind, h_ahead);
 }
 
-float ao_pass(ivec2 target_pixel)
+// The slice integral a(h-, n) + a(h+, n), without the |n_p| factor.
+ao_half ao_gtao_slice_integral(ao_half n, ao_half2 horizons)
+{
+    return ao_slice_arc(horizons.x, n) + ao_slice_arc(horizons.y, n);
+}
+
+
+ao_value ao_pass(ivec2 target_pixel)
 {
     ivec2 p;
     vec3 P, V, n;
-    if (!ao_pass_surface(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
+    if (!ao_pass_surface(target_pixel, p, P, V, n)) return ao_open_value(); // background, or no surface to integrate over
 
     // The search radius on screen, capped at half its height, and the world radius the cap
     // leaves, which bounds the horizon search as u.radius does (common/slices.glsl).
@@ -153,6 +161,8 @@ float ao_pass(ivec2 target_pixel)
     vec2 centre = vec2(p) + 0.5;
     float visibility_sum = 0.0; // sum of |n_p| (a(h-, n) + a(h+, n))
     float unoccluded_sum = 0.0; // sum of |n_p| (cos n + n sin n)
+    vec3 bent_sum = vec3(0.0);  // with bent normals: sum of |n_p| b_s, the slices' vectors (common/slices.glsl's THE BENT NORMAL)
+    vec3 open_sum = vec3(0.0);  //   and of |n_p| u_s, the open slices' (its CONTROL VARIATE)
     for (int s = 0; s < AO_GTAO_SLICES; ++s) {
         vec2 dir;  // on screen (pixels, y down)
         vec3 side; // in the slice plane, perpendicular to V
@@ -173,10 +183,19 @@ float ao_pass(ivec2 target_pixel)
             cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, distance, p, P, V, max_distance, -sin_n));
             cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, distance, p, P, V, max_distance, sin_n));
         }
-        ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
+        ao_half n_angle = clamp(projected.y, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
+        ao_half2 horizons = ao_gtao_horizons(n_angle, ao_half(cos_behind), ao_half(cos_ahead));
+        ao_half integral = ao_gtao_slice_integral(n_angle, horizons);
         visibility_sum += float(projected.x * integral);
         unoccluded_sum += float(projected.x * ao_slice_unoccluded(projected.y));
+#if defined(AO_BENT_NORMALS)
+        vec2 bent = float(projected.x) * ao_slice_bent(float(n_angle), vec2(horizons)); // common/slices.glsl
+        vec2 open = float(projected.x) * ao_slice_open_bent(float(n_angle));
+        bent_sum += bent.x * V + bent.y * side;
+        open_sum += open.x * V + open.y * side;
+#endif
     }
     float visibility = unoccluded_sum > 0.0 ? clamp(visibility_sum / unoccluded_sum, 0.0, 1.0) : 1.0;
-    return visibility > 0.0 ? pow(visibility, u.strength) : 0.0;
+    float ao = visibility > 0.0 ? pow(visibility, u.strength) : 0.0;
+    return ao_make_value(ao, ao_slices_bent_normal(bent_sum, open_sum, AO_GTAO_SLICES, visibility, n));
 }

@@ -48,6 +48,14 @@ vec3 ao_upsample_candidate(ivec2 q)
     return vec3(ao, z, counts ? 1.0 : 0.0);
 }
 
+// The bent normal of target texel q, clamped to the target as above (a -bn variant's: common/
+// core.glsl's ao_value; zero without bent normals).
+vec3 ao_upsample_candidate_bent(ivec2 q)
+{
+    ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
+    return ao_value_bent(ao_read_input(min(q, size - 1)));
+}
+
 #if defined(AO_STAGE_COMPUTE)
 // Compute passes: one invocation per target texel q0, writing the 2 x 2 screen pixels it
 // covers (entry_compute.glsl: AO_PASS_WRITES_QUADS; dispatch over the target's size). The
@@ -62,6 +70,9 @@ vec3 ao_upsample_candidate(ivec2 q)
 #define AO_TILE_WIDTH (AO_WORKGROUP_X + 1)
 #define AO_TILE_HEIGHT (AO_WORKGROUP_Y + 1)
 shared vec3 ao_tile[AO_TILE_WIDTH * AO_TILE_HEIGHT];
+#if defined(AO_BENT_NORMALS)
+shared vec3 ao_tile_bent[AO_TILE_WIDTH * AO_TILE_HEIGHT]; // their bent normals
+#endif
 
 // The target texel the tile's (0, 0) holds: the group's first invocation's.
 ivec2 ao_tile_origin()
@@ -73,28 +84,47 @@ ivec2 ao_tile_origin()
 void ao_load_tile()
 {
     ivec2 origin = ao_tile_origin();
-    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += AO_WORKGROUP_X * AO_WORKGROUP_Y)
-        ao_tile[i] = ao_upsample_candidate(origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH));
+    for (int i = int(gl_LocalInvocationIndex); i < AO_TILE_WIDTH * AO_TILE_HEIGHT; i += AO_WORKGROUP_X * AO_WORKGROUP_Y) {
+        ivec2 q = origin + ivec2(i % AO_TILE_WIDTH, i / AO_TILE_WIDTH);
+        ao_tile[i] = ao_upsample_candidate(q);
+#if defined(AO_BENT_NORMALS)
+        ao_tile_bent[i] = ao_upsample_candidate_bent(q);
+#endif
+    }
     barrier();
 }
 
-// Candidate q, inside this group's tile.
-vec3 ao_upsample_read(ivec2 q)
+// Where candidate q, inside this group's tile, is in it.
+int ao_tile_index(ivec2 q)
 {
     ivec2 t = q - ao_tile_origin();
-    return ao_tile[t.y * AO_TILE_WIDTH + t.x];
+    return t.y * AO_TILE_WIDTH + t.x;
 }
+
+// Candidate q, inside this group's tile, and its bent normal.
+vec3 ao_upsample_read(ivec2 q) { return ao_tile[ao_tile_index(q)]; }
+#if defined(AO_BENT_NORMALS)
+vec3 ao_upsample_read_bent(ivec2 q) { return ao_tile_bent[ao_tile_index(q)]; }
+#else
+vec3 ao_upsample_read_bent(ivec2 q) { return vec3(0.0); }
+#endif
 #else
 vec3 ao_upsample_read(ivec2 q)
 {
     return ao_upsample_candidate(q);
 }
+
+vec3 ao_upsample_read_bent(ivec2 q)
+{
+    return ao_upsample_candidate_bent(q);
+}
 #endif
 
 // The four target texels around screen pixel 2 q0 .. 2 q0 + 1, in the order q0, q0 + (1, 0),
-// q0 + (0, 1), q0 + (1, 1): their AO, their view z, and whether each counts.
+// q0 + (0, 1), q0 + (1, 1): their AO (with bent normals, AO and normal: common/core.glsl's
+// ao_value), their view z, and whether each counts.
 struct ao_candidates {
-    vec4 ao;
+    ao_value4 value;
     vec4 z;
     bvec4 valid;
 };
@@ -103,8 +133,9 @@ ao_candidates ao_upsample_candidates(ivec2 q0)
 {
     ao_candidates c;
     for (int k = 0; k < 4; ++k) {
-        vec3 candidate = ao_upsample_read(q0 + ivec2(k & 1, k >> 1));
-        c.ao[k] = candidate.x;
+        ivec2 q = q0 + ivec2(k & 1, k >> 1);
+        vec3 candidate = ao_upsample_read(q);
+        c.value[k] = ao_make_value(candidate.x, ao_upsample_read_bent(q));
         c.z[k] = candidate.y;
         c.valid[k] = candidate.z > 0.0;
     }
@@ -114,15 +145,15 @@ ao_candidates ao_upsample_candidates(ivec2 q0)
 // The upsampled AO of screen pixel P, with raw depth `depth` (not background), from the
 // candidates around it (q0 = P / 2): the weights of the header, the nearest texel in depth
 // where they all underflow, q0's value where no candidate counts.
-float ao_upsample_blend(ivec2 P, float depth, ivec2 q0, ao_candidates c)
+ao_value ao_upsample_blend(ivec2 P, float depth, ivec2 q0, ao_candidates c)
 {
     float z = ao_view_z(ao_pixel_uv(P), depth);
-    if (!ao_is_finite(z)) return c.ao.x;
+    if (!ao_is_finite(z)) return c.value[0];
     vec2 f = vec2(P - 2 * q0) * 0.5;
     vec4 bilinear = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-    float sum = 0.0;
+    ao_value sum = ao_value(0.0);
     float weight_sum = 0.0;
-    float nearest = c.ao.x;
+    ao_value nearest = c.value[0];
     float nearest_dz = -1.0; // none yet
     for (int k = 0; k < 4; ++k) {
         if (!c.valid[k]) continue;
@@ -130,12 +161,12 @@ float ao_upsample_blend(ivec2 P, float depth, ivec2 q0, ao_candidates c)
         if (!ao_is_finite(dz)) continue;
         if (nearest_dz < 0.0 || dz < nearest_dz) {
             nearest_dz = dz;
-            nearest = c.ao[k];
+            nearest = c.value[k];
         }
         if (!(bilinear[k] > 0.0)) continue; // off the footprint: no exp to pay for
         float w = bilinear[k] * exp(-dz * u.linear_sharpness);
         if (!(w > 0.0)) continue; // underflowed
-        sum += w * c.ao[k];
+        sum += w * c.value[k];
         weight_sum += w;
     }
     return weight_sum > 0.0 ? sum / weight_sum : nearest;
@@ -143,28 +174,28 @@ float ao_upsample_blend(ivec2 P, float depth, ivec2 q0, ao_candidates c)
 
 #if defined(AO_STAGE_COMPUTE)
 // The screen pixels 2 q0 + (0, 0), (1, 0), (0, 1), (1, 1), in that order.
-vec4 ao_pass_quad(ivec2 q0)
+ao_value4 ao_pass_quad(ivec2 q0)
 {
     vec4 g = ao_depth_quad(2 * q0); // textureGather's order: (0, 1), (1, 1), (1, 0), (0, 0)
     vec4 depth = vec4(g.w, g.z, g.x, g.y);
     if (ao_is_background(depth.x) && ao_is_background(depth.y) && ao_is_background(depth.z) && ao_is_background(depth.w))
-        return vec4(1.0);
+        return ao_quad_of(vec4(1.0));
     ivec2 last = ao_depth_size() - 1;
     ao_candidates c = ao_upsample_candidates(q0);
-    vec4 ao;
+    ao_value4 ao;
     for (int k = 0; k < 4; ++k) {
         ivec2 P = min(2 * q0 + ivec2(k & 1, k >> 1), last);
-        ao[k] = ao_is_background(depth[k]) ? 1.0 : ao_upsample_blend(P, depth[k], q0, c);
+        ao[k] = ao_is_background(depth[k]) ? ao_open_value() : ao_upsample_blend(P, depth[k], q0, c);
     }
     return ao;
 }
 #else
 // Fragment passes: one fragment per screen pixel.
-float ao_pass(ivec2 pixel)
+ao_value ao_pass(ivec2 pixel)
 {
     ivec2 P = clamp(pixel, ivec2(0), ao_depth_size() - 1);
     float depth = ao_load_depth(P);
-    if (ao_is_background(depth)) return 1.0;
+    if (ao_is_background(depth)) return ao_open_value();
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
     ivec2 q0 = clamp(P / 2, ivec2(0), size - 1);
     return ao_upsample_blend(P, depth, q0, ao_upsample_candidates(q0));

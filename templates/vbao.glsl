@@ -20,7 +20,8 @@
 //      its edge), on background, on the pixel itself, whose front lies farther than the
 //      radius from P, or at or below P's tangent plane mark nothing;
 //   3. the slice's visibility is the unmarked share of its sectors, 1 - popcount / 32,
-//      times its unoccluded integral cos n + n sin n (gtao.glsl's), weighted by |n_p|.
+//      times its unoccluded integral cos n + n sin n (gtao.glsl's), weighted by |n_p|; with
+//      bent normals (-bn), its bent vector from the unmarked directions (ao_vbao_slice_bent).
 // The visibility is sum |n_p| (1 - popcount / 32) (cos n + n sin n) / sum |n_p| (cos n + n sin n)
 // over the slices, raised to u.strength.
 //
@@ -136,6 +137,35 @@ ao_half ao_vbao_slice_visible(uint occluded)
     return ao_half(1.0) - ao_half(ao_vbao_bit_count(occluded)) / ao_half(AO_VBAO_SECTORS);
 }
 
+#if defined(AO_BENT_NORMALS)
+// A slice's bent vector (common/slices.glsl's THE BENT NORMAL) from its mask is the open
+// slice's (ao_slice_open_bent, exact) less the occluded directions', which this returns. The
+// mask holds sectors of equal measure whose angles the cumulative c(theta) does not give back
+// in closed form, so the occluded part is integrated over theta instead, by the midpoint rule
+// at AO_VBAO_BENT_PROBES angles spread evenly over the hemisphere [n - pi/2, n + pi/2]: a
+// probe at theta counts when the sector c(theta) falls in is marked, with its measure
+// cos(theta - n) |sin theta| dtheta along (cos theta, sin theta). An open slice is exact; an
+// occluded wedge's edges are placed to within half a probe's spacing (pi / 32), finer than
+// the 8-bit output's normal needs after the slices' and the filters' averaging.
+const int AO_VBAO_BENT_PROBES = 16;
+
+// (along V, along side), without |n_p|.
+vec2 ao_vbao_slice_occluded_bent(uint occluded, ao_half n)
+{
+    vec2 occluded_bent = vec2(0.0);
+    if (occluded == 0u) return occluded_bent;
+    float n_angle = float(n);
+    const float spacing = AO_PI / float(AO_VBAO_BENT_PROBES);
+    for (int j = 0; j < AO_VBAO_BENT_PROBES; ++j) {
+        float theta = n_angle - AO_HALF_PI + (float(j) + 0.5) * spacing;
+        uint sector = min(uint(float(ao_vbao_cumulative(ao_half(theta), n)) * float(AO_VBAO_SECTORS)), AO_VBAO_SECTORS - 1u);
+        if ((occluded & (1u << sector)) == 0u) continue;
+        occluded_bent += cos(theta - n_angle) * abs(sin(theta)) * spacing * vec2(cos(theta), sin(theta));
+    }
+    return occluded_bent;
+}
+#endif
+
 // The signed angle from V of the direction from P to view-space point X, on the side
 // `toward` (+1 ahead, -1 behind), or false when it cannot be known (X at P, not finite).
 bool ao_vbao_angle(vec3 X, vec3 P, vec3 V, float toward, out ao_half theta)
@@ -185,11 +215,11 @@ uint ao_vbao_sample(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, 
     return ao_vbao_sectors(theta_front, theta_back, n);
 }
 
-float ao_pass(ivec2 target_pixel)
+ao_value ao_pass(ivec2 target_pixel)
 {
     ivec2 p;
     vec3 P, V, n;
-    if (!ao_pass_surface(target_pixel, p, P, V, n)) return 1.0; // background, or no surface to integrate over
+    if (!ao_pass_surface(target_pixel, p, P, V, n)) return ao_open_value(); // background, or no surface to integrate over
 
     // The search radius on screen and the world radius its cap leaves (common/slices.glsl,
     // as gtao.glsl): the latter bounds the samples' distance.
@@ -200,6 +230,8 @@ float ao_pass(ivec2 target_pixel)
     vec2 centre = vec2(p) + 0.5;
     float visibility_sum = 0.0; // sum of |n_p| (1 - popcount / 32) (cos n + n sin n)
     float unoccluded_sum = 0.0; // sum of |n_p| (cos n + n sin n)
+    vec3 bent_sum = vec3(0.0);  // with bent normals: sum of |n_p| b_s, the slices' vectors (ao_vbao_slice_bent)
+    vec3 open_sum = vec3(0.0);  //   and of |n_p| u_s, the open slices' (common/slices.glsl's CONTROL VARIATE)
     for (int s = 0; s < AO_VBAO_SLICES; ++s) {
         vec2 dir;  // on screen (pixels, y down)
         vec3 side; // in the slice plane, perpendicular to V
@@ -217,7 +249,14 @@ float ao_pass(ivec2 target_pixel)
         float whole = float(projected.x * ao_slice_unoccluded(projected.y));
         visibility_sum += whole * float(ao_vbao_slice_visible(occluded));
         unoccluded_sum += whole;
+#if defined(AO_BENT_NORMALS)
+        vec2 open = float(projected.x) * ao_slice_open_bent(float(projected.y));
+        vec2 bent = open - float(projected.x) * ao_vbao_slice_occluded_bent(occluded, projected.y);
+        bent_sum += bent.x * V + bent.y * side;
+        open_sum += open.x * V + open.y * side;
+#endif
     }
     float visibility = unoccluded_sum > 0.0 ? clamp(visibility_sum / unoccluded_sum, 0.0, 1.0) : 1.0;
-    return visibility > 0.0 ? pow(visibility, u.strength) : 0.0;
+    float ao = visibility > 0.0 ? pow(visibility, u.strength) : 0.0;
+    return ao_make_value(ao, ao_slices_bent_normal(bent_sum, open_sum, AO_VBAO_SLICES, visibility, n));
 }

@@ -18,7 +18,9 @@
 //                                        Dawn's OpenGL ES backend (Tint → GLSL ES, Mesa's llvmpipe
 //                                        through EGL surfaceless), from DIR/chain.txt (below);
 //                                        writes DIR/out.bin, the last pass's output, one byte a
-//                                        pixel (.r of rgba8unorm), or DIR/run.error
+//                                        pixel (.r of rgba8unorm), and DIR/texels.bin, its whole
+//                                        texels packed (4 bytes for rgba8unorm, 1 for r8unorm), or
+//                                        DIR/run.error
 //   node aogen_wgsl.mjs versions         the versions of naga and of this script's Node.js
 //
 // Exit status: 0 when every file was handled (each with its output or its .error), 2 for a
@@ -269,6 +271,9 @@ async function runChain() {
     const r = new Uint8Array(last.w * last.h);
     for (let y = 0; y < last.h; ++y) for (let x = 0; x < last.w; ++x) r[y * last.w + x] = texels[y * rowBytes + last.texel * x];
     writeFileSync(join(dir, "out.bin"), r);
+    const packed = new Uint8Array(last.w * last.h * last.texel);
+    for (let y = 0; y < last.h; ++y) packed.set(texels.subarray(y * rowBytes, y * rowBytes + last.w * last.texel), y * last.w * last.texel);
+    writeFileSync(join(dir, "texels.bin"), packed);
     writeFileSync(join(dir, "device.txt"), `Dawn ${adapter.info.backendType || "opengles"}: ${adapter.info.description}`);
 }
 

@@ -16,7 +16,9 @@
 //     GTAO, Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it;
 //     VBAO at quality.hpp's four presets (1×2, 2×2, 3×3, 9×3), half resolution,
 //     bilateral blur, and High (3×3) at full resolution, compute;
-//     and SAO 8/16/32 taps × blur bilateral/denoise × full/half, compute.
+//     SAO 8/16/32 taps × blur bilateral/denoise × full/half, compute;
+//     and with bent normals (-bn): GTAO 2×2, 3×3 and 4×4 at half resolution with the
+//     denoiser, GTAO 3×3 at full resolution without a blur, and VBAO's High preset, compute.
 //
 // USAGE
 //     aogen::variant_matrix m;                  // one value per axis: the default variant
@@ -56,6 +58,7 @@ struct variant_matrix {
     std::vector<bool> fp16{false};
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
     std::vector<bool> multi_bounce{false};
+    std::vector<bool> bent_normals{false}; // on: GTAO and VBAO compute variants only (others skip it)
 };
 
 // Appends canonical(v) unless an equal variant is already in `out`.
@@ -73,7 +76,8 @@ inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40
     size_t product = 1;
     for (size_t n : {m.techniques.size(), m.ssao_samples.size(), m.gtao_slices.size(), m.gtao_steps.size(), m.blur.size(), m.blur_depth.size(),
                      m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
-                     m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size(), m.multi_bounce.size()})
+                     m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size(), m.multi_bounce.size(),
+                     m.bent_normals.size()})
         product = n == 0 ? 0 : std::min(product * std::min(n, cap + 1), cap + 1);
     return product;
 }
@@ -102,13 +106,16 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (ssao_decisions dec : m.decisions)
     for (bool fp16 : m.fp16)
     for (upsample_mode up : m.upsample)
-    for (bool mb : m.multi_bounce) {
+    for (bool mb : m.multi_bounce)
+    for (bool bn : m.bent_normals) {
         v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
         v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up, v.multi_bounce = mb;
+        v.bent_normals = bn;
         if (pc && t != technique::ssao) continue;
         if (fp16 && t == technique::sao) continue;
+        if (bn && (!has_slices(t) || stage != pipeline_stage::compute)) continue;
         validate(v);
         const variant c = canonical(v);
         if (seen.insert(to_name(c)).second) out.push_back(c);
@@ -143,6 +150,29 @@ inline std::vector<variant> seed_variants()
     return out;
 }
 
+// Bent normals' share of the default matrix: GTAO as engines that use bent normals run it --
+// half resolution with the denoiser at three costs, and High at full resolution unblurred --
+// and VBAO's High preset as the default matrix has it, so the report scores the bent normal
+// of each against the truth's.
+inline std::vector<variant> bent_normal_default_variants()
+{
+    variant_matrix m;
+    m.techniques = {technique::gtao};
+    m.bent_normals = {true};
+    m.blur = {blur_mode::denoise};
+    std::vector<variant> out;
+    for (int n : {2, 3, 4}) {
+        m.gtao_slices = {n}, m.gtao_steps = {n};
+        for (const variant& v : expand(m)) append_unique(out, v);
+    }
+    m.gtao_slices = {3}, m.gtao_steps = {3}, m.blur = {blur_mode::none}, m.half_resolution = {false};
+    for (const variant& v : expand(m)) append_unique(out, v);
+    variant vbao = vbao_default_variants()[2]; // High: 3×3, half resolution, bilateral
+    vbao.bent_normals = true;
+    append_unique(out, vbao);
+    return out;
+}
+
 inline std::vector<variant> default_matrix()
 {
     const std::vector<blur_mode> all_blurs{blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
@@ -159,12 +189,13 @@ inline std::vector<variant> default_matrix()
     for (const variant& v : expand(gtao)) append_unique(out, v);
     for (const variant& v : seed_variants()) append_unique(out, v);
     for (const variant& v : vbao_default_variants()) append_unique(out, v);
-    variant_matrix sao; // last: the others keep their order
+    variant_matrix sao; // after the others: they keep their order
     sao.techniques = {technique::sao};
     sao.ssao_samples = {8, 16, 32};
     sao.blur = {blur_mode::bilateral, blur_mode::denoise};
     sao.half_resolution = {false, true};
     for (const variant& v : expand(sao)) append_unique(out, v);
+    for (const variant& v : bent_normal_default_variants()) append_unique(out, v); // last, likewise
     return out;
 }
 

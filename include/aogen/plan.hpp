@@ -34,6 +34,9 @@
 //                     r32f, rgba16f   float targets
 //                   Anything else is an aogen::error naming these four. Every compute pass of
 //                   a variant gets the same format; the filter passes read the AO pass's .r.
+//                   A bent-normal variant (-bn) writes four channels, AO in .r and its bent
+//                   normal in .gba (output_format_of): r8 widens to rgba8 for it, rgba8 and
+//                   rgba16f stay, r32f is an error.
 //   diagnostics     true: every pass also stores the value it computed before ao_finalize's
 //                   guard (NaN and out-of-range values included) to an r32f image `raw` —
 //                   for a harness that checks the numerics, not for a renderer.
@@ -107,6 +110,18 @@ inline void validate(const options& o)
     // Core WebGPU's storage textures have no one-channel 8-bit format (r8unorm).
     if (o.model == binding_model::webgpu && o.output_format == "r8")
         fail("output format", "r8 is not a storage texture format of core WebGPU", "valid: rgba8, r32f, rgba16f");
+}
+
+// The format the AO passes of `v` write: o.output_format, widened to four channels for a
+// bent-normal variant, whose passes write (AO, bent normal) -- r8 becomes rgba8, the same
+// 8-bit unorm channels; rgba8 and rgba16f are kept. r32f has no four-channel format here:
+// an aogen::error naming what is valid.
+inline std::string output_format_of(const variant& v, const options& o)
+{
+    if (!v.bent_normals || o.output_format == "rgba8" || o.output_format == "rgba16f") return o.output_format;
+    if (o.output_format == "r8") return "rgba8";
+    fail("output format", quote(o.output_format) + " has one channel, and a bent-normal variant (-bn) writes four (AO, normal)",
+         "valid with -bn: r8 (widened to rgba8), rgba8, rgba16f");
 }
 
 // ---------------------------------------------------------------------------------
@@ -208,7 +223,7 @@ inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shad
         if (role == resource_role::uniforms) r.push_back({0, binding, k::uniform_buffer, name, uniform_block_of(v, pass).root.name, "", role});
         else if (role == resource_role::output)
             // The prefilter writes raw depth, whatever format the AO images have.
-            r.push_back({0, binding, k::storage_image, name, "", pass == pass_kind::prefilter ? "r32f" : o.output_format, role});
+            r.push_back({0, binding, k::storage_image, name, "", pass == pass_kind::prefilter ? "r32f" : output_format_of(v, o), role});
         else if (role == resource_role::raw) r.push_back({0, binding, k::storage_image, name, "", "r32f", role});
         else if (o.model == binding_model::vulkan) r.push_back({0, binding, k::combined_image_sampler, name, "", "", role});
         else {
@@ -304,6 +319,7 @@ inline std::vector<resource> resources(const variant& v, pass_kind pass, shader_
 {
     validate(v);
     validate(o);
+    output_format_of(v, o);
     detail::require_pass(v, pass);
     detail::require_stage(v, stage);
     return detail::resources_of(v, pass, stage, o);
@@ -371,6 +387,7 @@ inline plan make_plan(const variant& v, const options& o)
 {
     validate(v);
     validate(o);
+    output_format_of(v, o); // the pair: a -bn variant's four channels
     plan p;
     p.axes_ = canonical(v);
     p.name_ = aogen::detail::name_of(p.axes_);

@@ -20,8 +20,8 @@
 //   ours smooth ones), `fp16` (16-bit arithmetic in the AO pass), `nearest`
 //   (a half-resolution target left for the caller to upsample), `mip5` (a depth MIP chain of
 //   5 levels, read by far taps: depth_mips.hpp), `deint` (the AO pass dispatched as 4 x 4
-//   interleaved layers), `mb` (multi-bounce in the last pass's finalize step),
-//   `wg16x16` (workgroup size).
+//   interleaved layers), `bn` (bent normals written beside the AO), `mb` (multi-bounce in
+//   the last pass's finalize step), `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -107,6 +107,11 @@ struct variant {
     // of surfaces of albedo finalize_params::albedo (the GTAO paper's fit, common/core.glsl's
     // ao_multi_bounce). Every technique. DESIGN.md default: off.
     bool multi_bounce = false;
+    // Bent normals: every pass also writes the pixel's bent normal -- the cosine-weighted mean
+    // of its unoccluded directions, in view space -- beside the AO, which needs a four-channel
+    // output (AO in .r, the normal in .gba: common/core.glsl's ao_value). GTAO and VBAO,
+    // compute stage (a fragment pass's target is one channel). DESIGN.md default: off.
+    bool bent_normals = false;
 };
 
 // The side of the pixel lattice a deinterleaved AO pass walks one layer of: the side of the
@@ -167,6 +172,11 @@ inline void validate(const variant& v)
              "valid: off with gtao, vbao and sao");
     if (v.fp16 && v.tech == technique::sao)
         fail("fp16", "is not available with sao (its taps' sum divides squared lengths, past 16-bit range)", "valid: off with sao");
+    if (v.bent_normals && !has_slices(v.tech))
+        fail("bent normals", std::string("come from GTAO's and VBAO's slices, not available with ") + names::name_of(technique_names, v.tech, "technique"),
+             "valid: gtao, vbao, or off");
+    if (v.bent_normals && v.stage != pipeline_stage::compute)
+        fail("bent normals", "need the compute stage (a fragment pass writes one channel, the AO)", "valid: off with the fragment stage");
 }
 
 // ---------------------------------------------------------------------------------
@@ -264,6 +274,7 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
     if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
     if (pass == pass_kind::ao && v.deinterleaved) count("AO_DEINTERLEAVED_LAYERS", deinterleaved_layers);
     if (v.multi_bounce && pass == passes(v).back()) d.push_back({"AO_MULTI_BOUNCE", ""}); // the finalize step of the last pass
+    if (v.bent_normals && pass != pass_kind::prefilter) d.push_back({"AO_BENT_NORMALS", ""}); // every pass that reads or writes AO
     if (pass == pass_kind::ao) {
         choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
         choice("NORMALS", names::name_of(normal_source_names, v.normals, "normals"));
@@ -327,7 +338,8 @@ inline bool operator==(const variant& a, const variant& b)
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
            x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.decisions == y.decisions && x.fp16 == y.fp16 &&
-           x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved && x.multi_bounce == y.multi_bounce;
+           x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved && x.multi_bounce == y.multi_bounce &&
+           x.bent_normals == y.bent_normals;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -397,6 +409,7 @@ inline std::string name_of(const variant& input)
     if (v.upsample != d.upsample) name += "-nearest";
     if (v.depth_mips != d.depth_mips) name += "-mip" + std::to_string(v.depth_mips);
     if (v.deinterleaved) name += "-deint";
+    if (v.bent_normals) name += "-bn";
     if (v.multi_bounce) name += "-mb";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
@@ -452,6 +465,7 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "fp16") v.fp16 = true;
         else if (x == "nearest") v.upsample = upsample_mode::nearest;
         else if (x == "deint") v.deinterleaved = true;
+        else if (x == "bn") v.bent_normals = true;
         else if (x == "mb") v.multi_bounce = true;
         else if (kind == "mip") {
             if ((v.depth_mips = detail::parse_count(x, 3)) < 0) fail(subject, quote(x) + " is not a depth MIP level count", "valid: mip2..mip5");
@@ -459,7 +473,7 @@ inline variant variant_from_name(const std::string& name)
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, mb, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, bn, mb, wg<X>x<Y>");
     }
     try {
         validate(v);

@@ -266,10 +266,12 @@ struct dawn_pass {
     std::vector<uint8_t> uniforms;
 };
 
-// The result of run_on_dawn: the last pass's output (.r, one byte a pixel, row-major) and the
-// device Dawn ran it on.
+// The result of run_on_dawn: the last pass's output (.r, one byte a pixel, row-major), its
+// whole texels (4 bytes each for compute passes' rgba8unorm, 1 for fragment passes' r8unorm)
+// and the device Dawn ran it on.
 struct dawn_result {
     std::vector<uint8_t> ao;
+    std::vector<uint8_t> texels;
     std::string device;
 };
 
@@ -303,8 +305,8 @@ inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& 
         while (!message.empty() && message.back() == '\n') message.pop_back();
         fail("wgsl on dawn", message, "valid: a chain Dawn's OpenGL ES backend runs");
     }
-    const std::string ao = detail::read_all(s.file("out.bin"));
-    return {std::vector<uint8_t>(ao.begin(), ao.end()), detail::read_all(s.file("device.txt"))};
+    const std::string ao = detail::read_all(s.file("out.bin")), texels = detail::read_all(s.file("texels.bin"));
+    return {std::vector<uint8_t>(ao.begin(), ao.end()), std::vector<uint8_t>(texels.begin(), texels.end()), detail::read_all(s.file("device.txt"))};
 }
 
 } // namespace aogen::wgsl

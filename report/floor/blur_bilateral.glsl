@@ -10,10 +10,11 @@
 
 // u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
-float ao_pass(ivec2 p)
+// ao_value (common/core.glsl): with bent normals the output's normal channels are written too.
+ao_value ao_pass(ivec2 p)
 {
     float depth = ao_load_depth(ao_full_pixel(p));
-    if (ao_is_background(depth)) return 1.0;
+    if (ao_is_background(depth)) return ao_make_value(1.0, vec3(0.0));
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
     float sum = depth + texelFetch(u_ao_input, clamp(p, ivec2(0), size - 1), 0).r;
     for (int i = 1; i <= 3; ++i) {
@@ -23,5 +24,5 @@ float ao_pass(ivec2 p)
             sum += ao_load_depth(ao_full_pixel(q)) + texelFetch(u_ao_input, q, 0).r;
         }
     }
-    return fract(sum);
+    return ao_make_value(fract(sum), vec3(0.0));
 }

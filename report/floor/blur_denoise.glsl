@@ -35,10 +35,11 @@ void ao_load_tile()
     barrier();
 }
 
-float ao_pass(ivec2 p)
+// ao_value (common/core.glsl): with bent normals the output's normal channels are written too.
+ao_value ao_pass(ivec2 p)
 {
     ivec2 t = p - ao_tile_origin();
     vec2 sum = vec2(0.0);
     for (int dx = -AO_DENOISE_RADIUS; dx <= AO_DENOISE_RADIUS; ++dx) sum += ao_columns[(t.y - AO_DENOISE_RADIUS) * AO_TILE_WIDTH + t.x + dx];
-    return fract(sum.x + sum.y);
+    return ao_make_value(fract(sum.x + sum.y), vec3(0.0));
 }

@@ -18,12 +18,13 @@ float ao_floor_slice_tap_fetches(vec2 pos, float distance)
     return depth;
 }
 
-float ao_pass(ivec2 target_pixel)
+// ao_value (common/core.glsl): with bent normals the output's normal channels are written too.
+ao_value ao_pass(ivec2 target_pixel)
 {
     ivec2 p;
     float sum, radius_pixels;
     vec2 rotation;
-    if (!ao_floor_centre(target_pixel, p, sum, rotation, radius_pixels)) return 1.0;
+    if (!ao_floor_centre(target_pixel, p, sum, rotation, radius_pixels)) return ao_make_value(1.0, vec3(0.0));
     vec2 centre = vec2(p) + 0.5;
     for (int s = 0; s < AO_GTAO_SLICES; ++s) {
         float angle = float(s) * (AO_PI / float(AO_GTAO_SLICES));
@@ -35,5 +36,5 @@ float ao_pass(ivec2 target_pixel)
             sum += ao_floor_slice_tap_fetches(centre + offset, distance) + ao_floor_slice_tap_fetches(centre - offset, distance);
         }
     }
-    return fract(sum);
+    return ao_make_value(fract(sum), vec3(0.0));
 }

@@ -28,7 +28,8 @@ void ao_load_tile()
     barrier();
 }
 
-vec4 ao_pass_quad(ivec2 q0)
+// ao_quad_of (common/core.glsl): with bent normals the output's normal channels are written too.
+ao_value4 ao_pass_quad(ivec2 q0)
 {
     ivec2 t = q0 - ao_tile_origin();
     vec4 sum = ao_depth_quad(2 * q0);
@@ -36,5 +37,5 @@ vec4 ao_pass_quad(ivec2 q0)
         vec2 c = ao_tile[(t.y + (k >> 1)) * AO_TILE_WIDTH + t.x + (k & 1)];
         sum[k] += c.x + c.y;
     }
-    return fract(sum);
+    return ao_quad_of(fract(sum));
 }

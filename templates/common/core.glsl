@@ -209,3 +209,58 @@ float ao_output(float ao)
 #endif
     return v;
 }
+
+// ---- the value a pass carries: the AO, or the AO and its bent normal -------------------
+// A bent-normal variant (-bn: AO_BENT_NORMALS) carries per pixel the AO and its bent normal
+// -- the cosine-weighted mean of the unoccluded directions, in view space (gtao.glsl) -- as
+// one vec4 (ao, normal.xyz) through every pass; every other variant a float. The filter
+// passes weigh and sum an ao_value exactly as they would the AO alone: the weighted sum of
+// the normals is the direction of their weighted mean, renormalised when it is written, so
+// one template serves both and a -bn variant's AO is its twin's bit for bit.
+//   Stored (ao_output_texel) in a four-channel image (aogen::codegen::output_format_of):
+//   .r the AO as ao_output writes it, .gba the unit normal as n * 0.5 + 0.5 -- a unorm
+//   channel holds it, 8 bits put it within 0.5 degrees. A pixel with no bent normal
+//   (background, no surface normal) stores (0.5, 0.5, 0.5): the zero vector, which the
+//   filters skip by weight and a reader recognises by its length.
+#if defined(AO_BENT_NORMALS)
+#if defined(AO_STAGE_FRAGMENT)
+#error aogen: bent normals need the compute stage (a fragment pass's target is one channel)
+#endif
+#define ao_value vec4
+#define ao_value4 mat4 // four pixels' values (an upsample invocation's 2 x 2): column k, pixel k
+ao_value ao_make_value(float ao, vec3 bent_normal) { return vec4(ao, bent_normal); }
+float ao_value_ao(ao_value v) { return v.x; }
+vec3 ao_value_bent(ao_value v) { return v.yzw; }
+// A unit normal in [0, 1]^3; the zero vector (and anything not finite) as 0.5.
+vec3 ao_encode_normal(vec3 n)
+{
+    float length_squared = dot(n, n);
+    if (!(length_squared > 1e-12 && length_squared < 1e30)) return vec3(0.5); // NaN fails too
+    return clamp(n * inversesqrt(length_squared) * 0.5 + 0.5, 0.0, 1.0);
+}
+vec4 ao_output_texel(ao_value v) { return vec4(ao_output(v.x), ao_encode_normal(v.yzw)); }
+ao_value4 ao_quad_of(vec4 ao) { return mat4(vec4(ao.x, 0.0, 0.0, 0.0), vec4(ao.y, 0.0, 0.0, 0.0), vec4(ao.z, 0.0, 0.0, 0.0), vec4(ao.w, 0.0, 0.0, 0.0)); }
+#if defined(AO_BINDING_AO_INPUT)
+// What a filter pass reads of the pass before at q: its AO made safe, its normal decoded.
+ao_value ao_read_input(ivec2 q)
+{
+    vec4 texel = texelFetch(u_ao_input, q, 0);
+    return vec4(ao_finalize(texel.r), texel.gba * 2.0 - 1.0);
+}
+#endif
+#else
+#define ao_value float
+#define ao_value4 vec4
+ao_value ao_make_value(float ao, vec3 bent_normal) { return ao; }
+float ao_value_ao(ao_value v) { return v; }
+vec3 ao_value_bent(ao_value v) { return vec3(0.0); }
+vec4 ao_output_texel(ao_value v) { return vec4(ao_output(v), 0.0, 0.0, 1.0); }
+ao_value4 ao_quad_of(vec4 ao) { return ao; }
+#if defined(AO_BINDING_AO_INPUT)
+ao_value ao_read_input(ivec2 q) { return ao_finalize(texelFetch(u_ao_input, q, 0).r); }
+#endif
+#endif
+// ao_quad_of(ao): four pixels' values from their AO alone, with no bent normal (what an
+// upsample invocation's 2 x 2 holds when every pixel is open).
+// An open pixel's value: AO exactly 1, no bent normal.
+ao_value ao_open_value() { return ao_make_value(1.0, vec3(0.0)); }

@@ -1,7 +1,7 @@
 // common/slices.glsl -- what the slice-based AO passes (gtao.glsl, vbao.glsl) share: the
 // search radius on screen, each slice's direction and plane, the
-// normal projected onto that plane, and the slice's cosine-weighted measure. gtao.glsl's
-// header derives the measure.
+// normal projected onto that plane, the slice's cosine-weighted measure, and (-bn) its bent
+// vector. gtao.glsl's header derives the measure.
 //
 // A slice is the plane through P spanned by V (toward the camera) and `side`, the screen
 // direction `dir` made perpendicular to V. Angles within it are signed angles from V,
@@ -90,4 +90,63 @@ ao_half ao_slice_unoccluded(ao_half n_angle)
 {
     ao_half n = clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
     return cos(n) + n * sin(n);
+}
+
+// THE BENT NORMAL (a -bn variant; without one, nothing calls what follows and it is not in the code)
+//   The bent normal is the cosine-weighted mean of the unoccluded directions,
+//       B = normalize( integral over the hemisphere of V(w) (n . w) w dw ),
+//   the direction the truth traces (aogen_truth's estimate::bent_normal). In slice coordinates
+//   w = cos theta V + sin theta side (gtao.glsl's header), so a slice adds
+//       |n_p| * integral over its visible theta of cos(theta - n) |sin theta| (cos theta V + sin theta side) dtheta
+//   -- the AO's slice integral with w inside. The slices' vectors are summed in view space
+//   and normalised when the pass writes them.
+//   Between two horizons h- <= 0 <= h+ (GTAO's visible arc), with cos(t - n) = cos t cos n +
+//   sin t sin n, the two components have the antiderivatives (for sin t >= 0)
+//       along V:     G(t) = (sin n sin^3 t - cos n cos^3 t) / 3
+//       along side:  H(t) = (cos n sin^3 t + sin n (cos^3 t - 3 cos t)) / 3
+//   and, |sin t| flipping sign at 0 as in the AO's integral, both sides sum to
+//       along V:     G(h+) + G(h-) - 2 G(0) = G(h+) + G(h-) + 2 cos n / 3
+//       along side:  H(h+) + H(h-) - 2 H(0) = H(h+) + H(h-) + 4 sin n / 3.
+//   An open slice with n = 0 gives (2/3, 0): along V; a wall at h+ = 0 tilts it to
+//   (1/3, -1/3), away from the wall. At the hemisphere's edges h+- = n +- pi/2 the G and H
+//   terms cancel and an open slice gives (2 cos n, 4 sin n) / 3 (ao_slice_open_bent): it
+//   leans further toward the view plane than n_p itself (|sin t| weighs directions near it
+//   more), so a few slices of an open plane sum to a direction off the normal, by as much as
+//   their turn decides -- only the integral over phi is the normal:
+//       integral_0^pi |n_p| (2 cos n, 4 sin n) / 3 dphi = (2 pi / 3) n.
+// CONTROL VARIATE
+//   So the open part is not estimated, it is known: with S slices at stratified turns,
+//   sum |n_p| b_s estimates (S / pi) times the integral, and sum |n_p| u_s (u_s the open
+//   slice's vector) estimates (S / pi) (2 pi / 3) n = (2 S / 3) n, which is exact. The
+//   estimate
+//       sum |n_p| b_s + beta ((2 S / 3) n - sum |n_p| u_s)
+//   has the same mean for any beta and, with beta near the optimal Cov(b, u) / Var(u), less
+//   noise: an open pixel's b_s is u_s, so beta = 1 gives it the normal exactly, and a closed
+//   one's b_s does not follow u_s at all (beta = 0). aogen takes beta = the pixel's
+//   visibility (the share of the open measure its slices saw unoccluded, before `strength`):
+//   between those two, as b_s follows u_s in proportion to what is open (ao_slices_bent_normal).
+// The open slice's vector (along V, along side), without |n_p|: ao_slice_bent at n +- pi/2.
+vec2 ao_slice_open_bent(float n)
+{
+    return vec2(2.0 * cos(n), 4.0 * sin(n)) / 3.0;
+}
+
+// The bent normal's direction from the slices' sums (CONTROL VARIATE): `bent_sum` = sum |n_p|
+// b_s and `open_sum` = sum |n_p| u_s in view space, `slices` = S, `visibility` = beta, `n` the
+// surface normal -- which is also the answer where nothing is left (a fully occluded pixel).
+vec3 ao_slices_bent_normal(vec3 bent_sum, vec3 open_sum, int slices, float visibility, vec3 n)
+{
+    vec3 bent = bent_sum + visibility * ((2.0 * float(slices) / 3.0) * n - open_sum);
+    return dot(bent, n) > 1e-6 * length(bent) ? bent : n;
+}
+
+// The slice's vector between horizons (h-, h+), without |n_p|: (along V, along side).
+vec2 ao_slice_bent(float n, vec2 horizons)
+{
+    float sin_n = sin(n), cos_n = cos(n);
+    vec2 s = sin(horizons), c = cos(horizons);
+    vec2 s3 = s * s * s, c3 = c * c * c;
+    vec2 along_v = (sin_n * s3 - cos_n * c3) / 3.0;
+    vec2 along_side = (cos_n * s3 + sin_n * (c3 - 3.0 * c)) / 3.0;
+    return vec2(along_v.x + along_v.y + 2.0 * cos_n / 3.0, along_side.x + along_side.y + 4.0 * sin_n / 3.0);
 }

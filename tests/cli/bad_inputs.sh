@@ -630,6 +630,16 @@ group_generate() {
   AOGEN_NODE=/nonexistent/node expect_fail -m "wgsl target" -m "Node.js" -- "$aogen" generate --quiet --targets spv,wgsl --out out $v1
   new_case wgsl-tools-missing
   AOGEN_WGSL_TOOLS=/nonexistent expect_fail -m "wgsl target" -m "aogen_wgsl.mjs" -- "$aogen" generate --quiet --targets wgsl --out out $v1
+  new_case bent-normals-on-ssao # -bn comes from GTAO's horizons: refused by name with what is valid
+  expect_fail -m 'bent normals' -m 'ssao' -m 'valid: gtao, vbao' -- "${gen[@]}" --out out ssao-s16-half-bilateral-gbufworld-std-persp-cs-bn
+  new_case bent-normals-on-a-fragment-variant
+  expect_fail -m 'bent normals' -m 'compute' -- "${gen[@]}" --out out gtao-2x3-half-bilateral-gbufworld-std-persp-fs-bn
+  new_case spec-bent-normals-without-gtao-or-vbao
+  printf '{"matrices": [{"technique": ["ssao", "sao"], "bent_normals": ["on"]}]}' >"$c/spec.json"
+  expect_fail -m "$(field spec.json 'matrices[0].bent_normals')" -m 'gtao' -- "${gen[@]}" --out out --variants spec.json
+  new_case spec-bent-normals-neither-on-nor-off
+  printf '{"matrices": [{"technique": ["gtao"], "bent_normals": ["yes"]}]}' >"$c/spec.json"
+  expect_fail -m "$(field spec.json 'matrices[0].bent_normals[0]')" -m 'on' -m 'off' -- "${gen[@]}" --out out --variants spec.json
   new_case spec-samples-out-of-range
   printf '{"matrices": [{"samples": [0]}]}' >"$c/spec.json"
   expect_fail -m "$(field spec.json 'matrices[0].samples[0]')" -m '1\.\.256' -- "${gen[@]}" --out out --variants spec.json

@@ -124,8 +124,8 @@ list)
   check "axes list every depth convention" grep -q "standard, reversed, reversed_infinite" "$work/axes.txt"
   check "axes list XeGTAO's quality presets" grep -qx "GTAO and VBAO quality presets (XeGTAO's levels; slices x steps): low 1x2 medium 2x2 high 3x3 ultra 9x3" "$work/axes.txt"
   "$aogen" list --variants >"$work/variants.txt"
-  check "the default matrix has 113 variants" test "$(wc -l <"$work/variants.txt")" -eq 113
-  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 113
+  check "the default matrix has 118 variants" test "$(wc -l <"$work/variants.txt")" -eq 118
+  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 118
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004-step" "$work/variants.txt"
   check "VBAO's High preset is in it, at half and full resolution" grep -qx "vbao-3x3-full-bilateral-gbufworld-std-persp-cs" "$work/variants.txt"
   check "axes list vbao" grep -q "ssao | gtao | vbao" "$work/axes.txt"
@@ -216,6 +216,13 @@ assert names == ['gtao-2x3-half-denoise-gbufworld-std-persp-cs', 'gtao-2x3-half-
 "
   printf '{"matrices": [{"multi_bounce": ["yes"]}]}' >"$in/bad_mb_spec.json"
   expect_error "multi_bounce neither on nor off" "matrices\[0\].multi_bounce\[0\].*on.*off" generate --variants "$in/bad_mb_spec.json" --out gen
+  # bent_normals: a spec key for the -bn extra; GTAO's and VBAO's compute variants take it, the others skip it.
+  printf '{"matrices": [{"technique": ["gtao", "ssao", "vbao"], "blur": ["denoise"], "stage": ["compute", "fragment"], "bent_normals": ["on"]}]}' >"$in/bn_spec.json"
+  "$aogen" generate --quiet --out "$work/bn" --targets spv --variants "$in/bn_spec.json"
+  check "a spec's bent_normals makes -bn GTAO and VBAO compute variants and skips the others" python3 -c "
+import json; names = [v['name'] for v in json.load(open('$work/bn/manifest.json'))['variants']]
+assert names == ['gtao-2x3-half-denoise-gbufworld-std-persp-cs-bn', 'vbao-2x3-half-denoise-gbufworld-std-persp-cs-bn'], names
+"
   expect_error "unknown variant" "'blurry' is not a known name" generate --out gen ssao-s16-half-blurry-gbufworld-std-persp-cs
   expect_error "unknown target" "--targets: 'dxil' is not a known name.*valid: spv" generate --targets spv,dxil --out gen
   printf '{"matrices": [{"samples": [0]}]}' >"$in/bad_spec.json"
@@ -228,7 +235,7 @@ generate_default)
   # real compiler: SPIR-V by spirv-val, GLSL and ESSL by glslangValidator, HLSL by
   # glslang's HLSL front end. MSL has no compiler on Linux: it must name its entry point.
   "$aogen" generate --quiet --out "$work/all"
-  check "113 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 113"
+  check "118 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 118"
   cd "$work/all"
   declare -A seen
   checked=0

@@ -267,17 +267,18 @@ TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and
 TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
 {
     const std::vector<variant> m = default_matrix();
-    CHECK(m.size() == 32 + 60 + 4 + 5 + 12);
-    int ssao_cs = 0, gtao_cs = 0, vbao_cs = 0, sao_cs = 0, fs = 0;
+    CHECK(m.size() == 32 + 60 + 4 + 5 + 12 + 5);
+    int ssao_cs = 0, gtao_cs = 0, gtao_bent = 0, vbao_cs = 0, sao_cs = 0, fs = 0;
     for (const variant& v : m) {
         if (v.stage == pipeline_stage::fragment) ++fs;
         else if (v.tech == technique::ssao) ++ssao_cs;
-        else if (v.tech == technique::gtao) ++gtao_cs;
-        else if (v.tech == technique::vbao) ++vbao_cs;
+        else if (v.tech == technique::gtao) ++(v.bent_normals ? gtao_bent : gtao_cs);
+        else if (v.tech == technique::vbao) ++(v.bent_normals ? gtao_bent : vbao_cs);
         else ++sao_cs;
     }
     CHECK(ssao_cs == 32); // 4 sample counts x 4 blurs x full/half
     CHECK(gtao_cs == 60); // 5 slice counts x 3 step counts x 4 blurs
+    CHECK(gtao_bent == 5); // with bent normals: GTAO 2x2, 3x3, 4x4 half denoise, 3x3 full noblur, VBAO High (test_bent_normals.cpp)
     CHECK(vbao_cs == 5);
     CHECK(sao_cs == 12); // 3 tap counts x bilateral/denoise x full/half
     CHECK(fs == 4);
@@ -288,9 +289,10 @@ TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
                                            "vbao-3x3-half-bilateral-gbufworld-std-persp-cs", "vbao-9x3-half-bilateral-gbufworld-std-persp-cs",
                                            "vbao-3x3-full-bilateral-gbufworld-std-persp-cs"});
     CHECK(to_name(m.front()) == "ssao-s8-full-bilateral-gbufworld-std-persp-cs");
-    // SAO after VBAO.
+    // SAO after VBAO, then the bent-normal variants.
     CHECK(to_name(m[101]) == "sao-s8-full-bilateral-gbufworld-std-persp-cs");
-    CHECK(to_name(m.back()) == "sao-s32-half-denoise-gbufworld-std-persp-cs");
+    CHECK(to_name(m[112]) == "sao-s32-half-denoise-gbufworld-std-persp-cs");
+    CHECK(to_name(m.back()) == "vbao-3x3-half-bilateral-gbufworld-std-persp-cs-bn");
 }
 
 TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO and VBAO only, and named back", "[variant][quality]")

@@ -34,7 +34,9 @@ using namespace aogen;
 // on Vulkan and flipped an SSAO vote (8/255) and a VBAO sector (4/255): common/core.glsl's
 // ao_lerp. Then fragment variants: the seeds' four (the default matrix's fragment variants)
 // and three with the upsample, the denoise and VBAO, drawn as fullscreen triangles. Last, SAO
-// in each stage. Two carry multi-bounce (-mb), in an AO pass and in a fragment blur.
+// in each stage. Two carry multi-bounce (-mb), in an AO pass and in a fragment blur; two bent
+// normals (-bn), through the denoise and upsample and through the bilateral blur, whose
+// rgba8 texels' .gba the tests compare too.
 inline const char* const emitted_target_variants[] = {
     "ssao-s16-half-bilateral-gbufworld-std-persp-cs",
     "ssao-s8-full-box-recon-std-persp-cs",
@@ -54,7 +56,9 @@ inline const char* const emitted_target_variants[] = {
     "gtao-2x3-half-denoise-gbufworld-std-persp-fs",
     "vbao-2x2-full-box-recon-std-persp-fs-mb",
     "sao-s16-half-denoise-gbufworld-std-persp-cs",
-    "sao-s8-full-noblur-recon-std-persp-fs"};
+    "sao-s8-full-noblur-recon-std-persp-fs",
+    "gtao-2x2-half-denoise-gbufworld-std-persp-cs-bn",
+    "gtao-3x2-full-bilateral-recon-std-persp-cs-bn-mb"};
 
 // One validated context for the whole run (lavapipe's start-up is not free). Without a
 // device, or without the validation layer, each test fails, or, with

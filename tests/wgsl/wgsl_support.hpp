@@ -50,6 +50,8 @@ inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipe
     REQUIRE(got.height == expected.height);
     // The crease is occluded: the comparison is not between two blank images.
     CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f);
+    CHECK(got.bent_normal == expected.bent_normal); // a -bn variant's, byte for byte (empty otherwise)
+    CHECK(got.bent_normal.size() == (v.bent_normals ? 3 * got.ao.size() : 0));
     return difference_of(got.ao, expected.ao);
 }
 
@@ -58,12 +60,16 @@ inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, 
                                         const vulkan::chain_settings& s)
 {
     const auto [tw, th] = target_size(v, g.width, g.height);
-    const std::vector<uint8_t> bytes = wgsl::run_variant_on_dawn(v, texts, g, inputs_for(v, s, tw, th)).ao;
-    std::vector<float> ao(bytes.size());
-    for (size_t i = 0; i < ao.size(); ++i) ao[i] = bytes[i] / 255.0f;
+    const wgsl::dawn_result got = wgsl::run_variant_on_dawn(v, texts, g, inputs_for(v, s, tw, th));
+    std::vector<float> ao(got.ao.size());
+    for (size_t i = 0; i < ao.size(); ++i) ao[i] = got.ao[i] / 255.0f;
     const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
     REQUIRE(ao.size() == expected.ao.size());
     CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f); // not two blank images
+    if (v.bent_normals) { // its rgba8 texels' .gba, byte for byte
+        REQUIRE(got.texels.size() == 4 * ao.size());
+        CHECK(decode_bent_normals(got.texels.data(), ao.size()) == expected.bent_normal);
+    }
     return difference_of(ao, expected.ao);
 }
 

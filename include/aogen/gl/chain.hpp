@@ -36,6 +36,7 @@
 //   a diagnostics build (its raw image is not run here).
 #pragma once
 
+#include <aogen/bent_normals.hpp>
 #include <aogen/chain_inputs.hpp>
 #include <aogen/codegen.hpp>
 #include "context.hpp"
@@ -49,6 +50,7 @@ namespace aogen::gl {
 struct chain_result {
     int width = 0, height = 0;
     std::vector<float> ao; // width × height, the last pass's output, k / 255
+    std::vector<float> bent_normal; // a -bn variant's: 3 per pixel, view space (aogen/bent_normals.hpp); else empty
 };
 
 namespace detail {
@@ -157,9 +159,9 @@ inline GLuint groups(int size, int per_invocation, int workgroup)
     return GLuint((invocations + workgroup - 1) / workgroup);
 }
 
-// The AO of the last pass's output texture `t` (w × h, format R8 or RGBA8: .r), read through a
-// framebuffer as RGBA bytes, which both OpenGL and OpenGL ES read from any unorm attachment.
-inline std::vector<float> read_back(GLuint t, int w, int h)
+// The last pass's output texture `t` (w × h, format R8 or RGBA8), read through a framebuffer
+// as RGBA bytes, which both OpenGL and OpenGL ES read from any unorm attachment.
+inline std::vector<uint8_t> read_back(GLuint t, int w, int h)
 {
     GLuint framebuffer = 0;
     glGenFramebuffers(1, &framebuffer);
@@ -170,9 +172,7 @@ inline std::vector<float> read_back(GLuint t, int w, int h)
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &framebuffer);
-    std::vector<float> ao(size_t(w) * size_t(h));
-    for (size_t p = 0; p < ao.size(); ++p) ao[p] = rgba[4 * p] / 255.0f;
-    return ao;
+    return rgba;
 }
 
 inline GLenum image_format(const std::string& output_format)
@@ -285,7 +285,7 @@ inline chain_result run(const context& ctx, const variant& v, const std::vector<
     t.clamp = gl.sampler(GL_CLAMP_TO_EDGE), t.repeat = gl.sampler(GL_REPEAT);
     const auto [tw, th] = target_size(v, g.width, g.height);
     const bool compute = v.stage == pipeline_stage::compute;
-    const GLenum format = compute ? detail::image_format(o.output_format) : GL_R8;
+    const GLenum format = compute ? detail::image_format(codegen::output_format_of(v, o)) : GL_R8;
 
     GLuint previous = 0;
     int out_w = 0, out_h = 0;
@@ -312,7 +312,10 @@ inline chain_result run(const context& ctx, const variant& v, const std::vector<
     }
     chain_result r;
     r.width = out_w, r.height = out_h;
-    r.ao = detail::read_back(previous, out_w, out_h);
+    const std::vector<uint8_t> rgba = detail::read_back(previous, out_w, out_h);
+    r.ao.resize(size_t(out_w) * size_t(out_h));
+    for (size_t p = 0; p < r.ao.size(); ++p) r.ao[p] = rgba[4 * p] / 255.0f; // .r
+    if (v.bent_normals) r.bent_normal = decode_bent_normals(rgba.data(), r.ao.size());
     const GLenum error = glGetError();
     if (error != GL_NO_ERROR) fail("gl chain " + to_name(v), "GL error " + std::to_string(error), "valid: none");
     return r;

@@ -38,6 +38,7 @@
 //   wrong number of passes, an unknown resource name, a failing Vulkan call.
 #pragma once
 
+#include <aogen/bent_normals.hpp>
 #include "diagnostics.hpp"
 #include "inputs.hpp"
 #include "passes.hpp"
@@ -53,6 +54,7 @@ namespace aogen::vulkan {
 struct chain_result {
     int width = 0, height = 0;
     std::vector<float> ao;           // width × height, the last pass's output
+    std::vector<float> bent_normal;  // a -bn chain's: 3 per pixel, view space, unit or 0 (none: bent_normals.hpp); else empty
     std::vector<std::string> passes; // "ao", "blur_x", ...
     std::vector<double> pass_ms;     // GPU time of each pass; empty without timestamps
     std::vector<raw_counts> raw;     // per pass, for diagnostic passes; empty otherwise
@@ -141,6 +143,7 @@ public:
         chain_result out;
         out.width = width(), out.height = height();
         out.ao = decode_output(last, ao);
+        if (passes_.bent_normals()) out.bent_normal = bent_normals_of(last, ao);
         for (size_t i = 0; i < passes_.size(); ++i) out.passes.push_back(names::name_of(pass_kind_names, passes_[i].kind, "pass"));
         if (pool) out.pass_ms = pass_ms(read_queries(ctx_, pool, queries()), 0);
         if (has_raw_)
@@ -205,6 +208,15 @@ private:
             else out[k] = bytes[k * texel] / 255.0f;
         }
         return out;
+    }
+
+    // Output `i`'s bent normals (a -bn chain: .gba of rgba8, aogen/bent_normals.hpp), decoded.
+    std::vector<float> bent_normals_of(size_t i, const buffer& host) const
+    {
+        if (passes_[i].output_format != VK_FORMAT_R8G8B8A8_UNORM)
+            throw error("vulkan bound chain: " + passes_.name() + " writes bent normals to a format not read back here (valid: rgba8)");
+        const auto [w, h] = sizes_[i];
+        return aogen::decode_bent_normals(static_cast<const uint8_t*>(host.mapped), static_cast<size_t>(w) * h);
     }
 
     // The size of a pass's output image: the screen's for the upsample, the atlas of the

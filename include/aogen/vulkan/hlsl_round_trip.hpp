@@ -35,7 +35,7 @@ inline std::unique_ptr<pass_pipelines> hlsl_passes(context& ctx, const variant& 
         cache.put(s, compile::hlsl_to_spirv(s.glsl, s.stage, s.name + "." + compile::to_name(target)));
     }
     return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (" + compile::to_name(target) + " round trip)", v.stage, v.workgroup_x,
-                                            v.workgroup_y, sources, &cache);
+                                            v.workgroup_y, sources, &cache, v.bent_normals);
 }
 
 // `v`'s passes built from its emitted HLSL of `target` (hlsl50 or hlsl60).

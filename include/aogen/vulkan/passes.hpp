@@ -103,15 +103,17 @@ public:
     // The same from its sources, for a caller that has generated them already (the report
     // compiles every source of a run in one batch first): `sources` must be generate(p)'s.
     pass_pipelines(context& ctx, const codegen::plan& p, const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
-        : pass_pipelines(ctx, p.name(), p.axes().stage, p.axes().workgroup_x, p.axes().workgroup_y, require_planned(p, sources), cache)
+        : pass_pipelines(ctx, p.name(), p.axes().stage, p.axes().workgroup_x, p.axes().workgroup_y, require_planned(p, sources), cache,
+                         p.axes().bent_normals)
     {
     }
 
     // Passes from `sources` (codegen's order: per pass the compute shader, or the vertex
     // then the fragment shader), all of `stage`; `name` names them in messages.
+    // `bent_normals`: the sources are a -bn variant's (their outputs hold bent normals).
     pass_pipelines(context& ctx, std::string name, pipeline_stage stage, int workgroup_x, int workgroup_y,
-                   const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
-        : ctx_(ctx), name_(std::move(name)), stage_(stage), workgroup_x_(workgroup_x), workgroup_y_(workgroup_y)
+                   const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr, bool bent_normals = false)
+        : ctx_(ctx), name_(std::move(name)), stage_(stage), bent_normals_(bent_normals), workgroup_x_(workgroup_x), workgroup_y_(workgroup_y)
     {
         if (fragment() && !ctx.graphics())
             throw error("vulkan: " + name_ + " is a fragment chain, and the queue of " + ctx.device_name() +
@@ -132,6 +134,8 @@ public:
     const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
     bool fragment() const { return stage_ == pipeline_stage::fragment; }
     const std::string& name() const { return name_; }
+    // Do the passes write a bent normal beside the AO (a -bn variant's: .gba of rgba8)?
+    bool bent_normals() const { return bent_normals_; }
 
     // Where the passes read their inputs (uploads and the previous pass's output).
     VkPipelineStageFlags reader_stage() const
@@ -393,6 +397,7 @@ private:
     context& ctx_;
     std::string name_;
     pipeline_stage stage_;
+    bool bent_normals_;
     VkFormat output_format_ = ao_format;
     bool has_ao_output_ = false; // output_format_ is a pass's, not the default
     int workgroup_x_, workgroup_y_;

@@ -39,7 +39,8 @@ inline std::unique_ptr<pass_pipelines> wgsl_passes(context& ctx, const variant& 
         sources[i].glsl = texts[i];
         cache.put(sources[i], words[i]);
     }
-    return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (wgsl)", v.stage, v.workgroup_x, v.workgroup_y, sources, &cache);
+    return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (wgsl)", v.stage, v.workgroup_x, v.workgroup_y, sources, &cache,
+                                            v.bent_normals);
 }
 
 class wgsl_round_trips {
@@ -79,7 +80,7 @@ public:
         const auto found = sources_.find(to_name(v));
         if (found == sources_.end()) fail("wgsl round trip", to_name(v) + " was not translated", "valid: a variant given to wgsl_round_trips");
         return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (wgsl round trip)", v.stage, v.workgroup_x, v.workgroup_y, found->second,
-                                                &wgsl_);
+                                                &wgsl_, v.bent_normals);
     }
 
     // The WGSL texts of `v`, one per shader in codegen's order.

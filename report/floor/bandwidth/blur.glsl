@@ -4,9 +4,10 @@
 
 // u_ao_input: declared by aogen::codegen (aogen/bindings.hpp).
 
-float ao_pass(ivec2 p)
+// ao_value (common/core.glsl): with bent normals the output's normal channels are written too.
+ao_value ao_pass(ivec2 p)
 {
     float depth = ao_load_depth(ao_full_pixel(p));
-    if (ao_is_background(depth)) return 1.0;
-    return fract(depth + texelFetch(u_ao_input, p, 0).r);
+    if (ao_is_background(depth)) return ao_make_value(1.0, vec3(0.0));
+    return ao_make_value(fract(depth + texelFetch(u_ao_input, p, 0).r), vec3(0.0));
 }

@@ -7,8 +7,9 @@
 
 #define AO_PASS_WRITES_QUADS
 
-vec4 ao_pass_quad(ivec2 q0)
+// ao_quad_of (common/core.glsl): with bent normals the output's normal channels are written too.
+ao_value4 ao_pass_quad(ivec2 q0)
 {
     ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
-    return fract(ao_depth_quad(2 * q0) + texelFetch(u_ao_input, min(q0, size - 1), 0).r);
+    return ao_quad_of(fract(ao_depth_quad(2 * q0) + texelFetch(u_ao_input, min(q0, size - 1), 0).r));
 }

@@ -22,6 +22,7 @@
 //   - height = rows · (band_height + H) + (rows − 1) · strip_gap (one row when there is none).
 #pragma once
 
+#include "metrics.hpp"
 #include "number_text.hpp"
 #include "png.hpp"
 #include "text.hpp"
@@ -31,16 +32,37 @@
 
 namespace aogen_report {
 
-// `src` (w × h) scaled up by the integer `factor` to W × H, clamped at the far edges.
-inline std::vector<float> upsample(const std::vector<float>& src, int w, int h, int factor, int W, int H)
+// `src` (w × h pixels of `channels` floats) scaled up by the integer `factor` to W × H,
+// nearest, clamped at the far edges.
+inline std::vector<float> upsample(const std::vector<float>& src, int w, int h, int factor, int W, int H, int channels = 1)
 {
-    if (factor < 1 || src.size() != size_t(w) * h || (W + factor - 1) / factor != w || (H + factor - 1) / factor != h)
+    if (factor < 1 || channels < 1 || src.size() != size_t(w) * h * channels || (W + factor - 1) / factor != w || (H + factor - 1) / factor != h)
         aogen::fail("upsample", std::to_string(w) + "x" + std::to_string(h) + " by " + std::to_string(factor) + " to " + std::to_string(W) + "x" +
                                     std::to_string(H),
                     "valid: w = ceil(W / factor) and h = ceil(H / factor)");
-    std::vector<float> out(size_t(W) * H);
+    std::vector<float> out(size_t(W) * H * channels);
     for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) out[size_t(y) * W + x] = src[size_t(y / factor) * w + x / factor];
+        for (int x = 0; x < W; ++x)
+            for (int c = 0; c < channels; ++c)
+                out[(size_t(y) * W + x) * channels + c] = src[(size_t(y / factor) * w + x / factor) * channels + c];
+    return out;
+}
+
+// Unit normals (3 floats per pixel) as 8-bit colours, n * 0.5 + 0.5 per channel (a normal
+// map's look: +x red, +y green, +z blue); a zero or non-finite normal becomes (128, 128, 128).
+inline std::vector<uint8_t> normal_bytes(const std::vector<float>& normals)
+{
+    std::vector<uint8_t> out(normals.size(), 128);
+    for (size_t i = 0; i < normals.size(); ++i)
+        if (std::isfinite(normals[i])) out[i] = uint8_t(std::lround((std::clamp(normals[i], -1.0f, 1.0f) * 0.5f + 0.5f) * 255.0f));
+    return out;
+}
+
+// normal_bytes read back: 3 floats per pixel in [-1, 1] (within 1/255 of what was written).
+inline std::vector<float> normals_of_bytes(const std::vector<uint8_t>& bytes)
+{
+    std::vector<float> out(bytes.size());
+    for (size_t i = 0; i < bytes.size(); ++i) out[i] = bytes[i] / 255.0f * 2.0f - 1.0f;
     return out;
 }
 
@@ -85,9 +107,19 @@ inline std::string strip_label(const std::string& name, double ms, double rmse)
     return name + "  " + detail::fixed(ms, 3, "n/a") + " ms  RMSE " + detail::fixed(rmse, 4, "n/a");
 }
 
-// Rows of a label band over three panels: reference | variant | |variant − reference|.
-// Background pixels (not valid) are drawn in background_colour in every panel. The layout
-// is the one described at the top of this header.
+// A bent-normal row's label: "gtao-3x3-...-bn  bent normal  mean 7.2 deg".
+inline std::string bent_strip_label(const std::string& name, double mean_degrees)
+{
+    return name + "  bent normal  mean " + detail::fixed(mean_degrees, 1, "n/a") + " deg";
+}
+
+// Rows of a label band over three panels: reference | variant | |variant − reference| of
+// the AO (add_row), or of the bent normals (add_bent_normal_row: the normals as colours,
+// normal_bytes' look, and the angle between them on the heat ramp, yellow at
+// bent_heat_full_scale_degrees). Background pixels (not valid) are drawn in
+// background_colour in every panel. The layout is the one described at the top of this header.
+inline constexpr float bent_heat_full_scale_degrees = 30.0f;
+
 class strip {
 public:
     strip(int width, int height) : w_(width), h_(height), text_scale_(strip_text_scale(height)) {}
@@ -95,10 +127,33 @@ public:
     // `label` is drawn as printable() ASCII; an empty one leaves the band empty.
     void add_row(const std::vector<float>& reference, const std::vector<float>& ao, const std::vector<uint8_t>& valid, std::string label = {})
     {
-        const size_t n = size_t(w_) * h_;
-        if (reference.size() != n || ao.size() != n || valid.size() != n)
-            aogen::fail("image strip", "a row of " + std::to_string(ao.size()) + " pixels", "valid: " + std::to_string(n) + " pixels per image");
-        rows_.push_back({reference, ao, valid, printable(label)});
+        require_size(reference.size(), 1), require_size(ao.size(), 1), require_size(valid.size(), 1);
+        row k{{}, printable(label)};
+        for (size_t i = 0; i < valid.size(); ++i) {
+            const bool v = valid[i] != 0;
+            k.panels[0].push_back(v ? grey(reference[i]) : background_colour);
+            k.panels[1].push_back(v ? grey(ao[i]) : background_colour);
+            k.panels[2].push_back(v ? heat(ao[i] - reference[i], heat_full_scale) : background_colour);
+        }
+        rows_.push_back(std::move(k));
+    }
+
+    // Bent normals, 3 floats per pixel in one space (unit, or zero where there is none).
+    void add_bent_normal_row(const std::vector<float>& reference, const std::vector<float>& normals, const std::vector<uint8_t>& valid,
+                             std::string label = {})
+    {
+        require_size(reference.size(), 3), require_size(normals.size(), 3), require_size(valid.size(), 1);
+        row k{{}, printable(label)};
+        for (size_t i = 0; i < valid.size(); ++i) {
+            const bool v = valid[i] != 0;
+            const float* t = &reference[3 * i];
+            const float* n = &normals[3 * i];
+            k.panels[0].push_back(v ? normal_colour(t) : background_colour);
+            k.panels[1].push_back(v ? normal_colour(n) : background_colour);
+            const double angle = angle_degrees(n, t); // NaN: no normal, drawn as 90 degrees
+            k.panels[2].push_back(v ? heat(float(std::isnan(angle) ? 90.0 : angle), bent_heat_full_scale_degrees) : background_colour);
+        }
+        rows_.push_back(std::move(k));
     }
 
     int text_scale() const { return text_scale_; }
@@ -118,10 +173,23 @@ public:
 
 private:
     struct row {
-        std::vector<float> reference, ao;
-        std::vector<uint8_t> valid;
+        std::vector<rgb> panels[3]; // w_ × h_ colours each
         std::string label;
     };
+
+    void require_size(size_t n, size_t per_pixel) const
+    {
+        const size_t pixels = size_t(w_) * h_;
+        if (n != pixels * per_pixel)
+            aogen::fail("image strip", "a row of " + std::to_string(n / per_pixel) + " pixels", "valid: " + std::to_string(pixels) + " pixels per image");
+    }
+
+    static rgb normal_colour(const float* n)
+    {
+        if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]))) return {255, 0, 255};
+        const auto c = [](float x) { return uint8_t(std::lround((std::clamp(x, -1.0f, 1.0f) * 0.5f + 0.5f) * 255.0f)); };
+        return {c(n[0]), c(n[1]), c(n[2])};
+    }
 
     int margin() const { return strip_label_margin * text_scale_; }
 
@@ -143,14 +211,9 @@ private:
 
     void draw_panels(rgb_image& img, const row& k, int top) const
     {
-        for (int y = 0; y < h_; ++y)
-            for (int x = 0; x < w_; ++x) {
-                const size_t i = size_t(y) * w_ + x;
-                const bool v = k.valid[i] != 0;
-                img.set(x, top + y, v ? grey(k.reference[i]) : background_colour);
-                img.set(w_ + strip_gap + x, top + y, v ? grey(k.ao[i]) : background_colour);
-                img.set(2 * (w_ + strip_gap) + x, top + y, v ? heat(k.ao[i] - k.reference[i], heat_full_scale) : background_colour);
-            }
+        for (int p = 0; p < 3; ++p)
+            for (int y = 0; y < h_; ++y)
+                for (int x = 0; x < w_; ++x) img.set(p * (w_ + strip_gap) + x, top + y, k.panels[p][size_t(y) * w_ + x]);
     }
 
     int w_, h_, text_scale_;

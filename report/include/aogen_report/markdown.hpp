@@ -34,14 +34,14 @@ inline void write_variants(std::ostream& md, const report_data& d)
 {
     md << "## Variants, fastest first\n\n";
     md << "| variant | ms | p10–p90 | floor ms | × floor | BW floor ms | × BW | RMSE default | ★ | RMSE calibrated | ★ | RMSE after " << d.frames
-       << " frames | ★ | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
-    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|:-:|---:|---:|---:|\n";
+       << " frames | ★ | bent normal ° | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|:-:|---:|---:|---:|---:|\n";
     for (size_t i : detail::by_time(d.variants)) {
         const variant_record& v = d.variants[i];
         md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << detail::range(v.ms_p10, v.ms_p90) << " | " << fixed(v.floor_ms, 3) << " | "
            << fixed(v.floor_ratio, 2) << " | " << fixed(v.bandwidth_ms, 3) << " | " << fixed(v.bandwidth_ratio, 2) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | " << fixed(v.rmse_calibrated, 4)
            << " | " << (v.pareto_calibrated ? "★" : "") << " | " << fixed(v.rmse_accumulated, 4) << " | " << (v.pareto_accumulated ? "★" : "") << " | "
-           << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
+           << fixed(v.bent_degrees, 1, "") << " | " << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
            << " | " << detail::raw_range(v.raw, v.raw_measured) << " |\n";
     }
 }
@@ -53,7 +53,9 @@ inline void write_scenes(std::ostream& md, const report_data& d, const std::map<
     md << "\n" << noise_against_best(d) << "\n\n";
     md << "Each scene's strip shows, per row, reference | variant (default parameters) | |variant − reference| (black 0, yellow ≥ "
        << fixed(heat_full_scale, 2) << "; background in blue-grey), for the variants Pareto-optimal on that scene by time and "
-          "calibrated error, fastest first.\n";
+          "calibrated error, fastest first; then, for each variant with bent normals (`-bn`), reference | variant bent normal "
+          "(normal-map colours, world space) | the angle between them (black 0°, yellow ≥ "
+       << fixed(bent_heat_full_scale_degrees, 0) << "°).\n";
 }
 
 // Per scene, every variant that ran on it.
@@ -62,7 +64,7 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
     md << "\n## Per scene\n\n";
     md << "Columns: median ms and p10–p90; time / fetch floor; time / bandwidth floor; default RMSE, MAE, mean signed error (> 0: too light), "
           "99th-percentile |error|; calibrated RMSE and its power p; RMSE of the mean of the first "
-       << d.frames << " frames; raw NaN/Inf and out-of-range values (all passes).\n";
+       << d.frames << " frames; the bent normals' mean angle to the truth's, in degrees (-bn variants); raw NaN/Inf and out-of-range values (all passes).\n";
     for (size_t s = 0; s < d.scenes.size(); ++s) {
         md << "\n### " << d.scenes[s].scene.name << "\n\n";
         const auto strip = strips.find(d.scenes[s].scene.name);
@@ -71,8 +73,8 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
             for (size_t k = 0; k < strip->second.variants.size(); ++k) md << (k ? ", " : "") << "`" << strip->second.variants[k] << "`";
             md << ".\n\n";
         }
-        md << "| variant | ms | p10–p90 | × floor | × BW | RMSE | MAE | signed | p99 | RMSE cal. | p | RMSE " << d.frames << " fr. | raw NaN/Inf | raw out of [0, 1] |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        md << "| variant | ms | p10–p90 | × floor | × BW | RMSE | MAE | signed | p99 | RMSE cal. | p | RMSE " << d.frames << " fr. | bent ° | raw NaN/Inf | raw out of [0, 1] |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (size_t i : detail::by_time(d.variants)) {
             const variant_record& v = d.variants[i];
             const run_record& r = v.runs[s];
@@ -82,7 +84,7 @@ inline void write_per_scene(std::ostream& md, const report_data& d, const std::m
             md << "| `" << v.name << "` | " << fixed(r.ms.median, 3) << " | " << detail::range(r.ms.p10, r.ms.p90) << " | "
                << fixed(r.ms.median / r.floor_ms.median, 2) << " | " << fixed(r.ms.median / r.bandwidth_ms.median, 2) << " | " << fixed(r.plain.rmse, 4) << " | " << fixed(r.plain.mae, 4) << " | "
                << fixed(r.plain.mean_signed, 4) << " | " << fixed(r.plain.p99_abs, 3) << " | " << fixed(r.calibrated.rmse, 4) << " | "
-               << fixed(r.power, 2) << " | " << fixed(r.accumulated.rmse, 4) << " | " << detail::raw_non_finite(raw, !r.raw.empty()) << " | "
+               << fixed(r.power, 2) << " | " << fixed(r.accumulated.rmse, 4) << " | " << fixed(r.bent.mean_degrees, 1, "") << " | " << detail::raw_non_finite(raw, !r.raw.empty()) << " | "
                << detail::raw_range(raw, !r.raw.empty())
                << " |\n";
         }

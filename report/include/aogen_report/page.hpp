@@ -160,14 +160,15 @@ inline std::string page_data(const report_data& d)
             }
             const auto [png, factor] = ao_png(r.ao, d.scenes[s].truth, grids[s]);
             runs.push_back({{"ms", number(r.ms.median)}, {"rmse", number(r.plain.rmse)}, {"rmse_calibrated", number(r.calibrated.rmse)},
-                            {"rmse_accumulated", number(r.accumulated.rmse)}, {"power", number(r.power)}, {"factor", factor}});
+                            {"rmse_accumulated", number(r.accumulated.rmse)}, {"bent_degrees", number(r.bent.mean_degrees)},
+                            {"power", number(r.power)}, {"factor", factor}});
             images.push_back(png_uri(png));
         }
         nlohmann::json pass_ms = nlohmann::json::array();
         for (double ms : pass_medians(v)) pass_ms.push_back(number(ms));
         j["variants"].push_back({{"name", v.name}, {"ms", number(v.ms)}, {"ms_p10", number(v.ms_p10)}, {"ms_p90", number(v.ms_p90)},
                                  {"floor_ratio", number(v.floor_ratio)}, {"rmse", number(v.rmse)}, {"rmse_calibrated", number(v.rmse_calibrated)},
-                                 {"rmse_accumulated", number(v.rmse_accumulated)},
+                                 {"rmse_accumulated", number(v.rmse_accumulated)}, {"bent_degrees", number(v.bent_degrees)},
                                  {"passes", v.passes}, {"pass_ms", pass_ms}, {"runs", runs}});
         j["images"]["ao"].push_back(images);
     }
@@ -228,7 +229,7 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
     for (const char* title : {"ms", "p10", "p90", "× floor", "× BW", "RMSE default", "★", "RMSE calibrated", "★ cal."})
         html << sort_header(title, "number", true);
     html << sort_header("RMSE after " + std::to_string(d.frames) + " frames", "number", true) << sort_header("★ frames", "number", true)
-         << sort_header("AO instructions", "number", true);
+         << sort_header("bent normal °", "number", true) << sort_header("AO instructions", "number", true);
     html << sort_header("raw NaN/Inf", "text", true) << "</tr></thead>\n<tbody>\n";
     for (size_t i : by_time(d.variants)) {
         const variant_record& v = d.variants[i];
@@ -241,6 +242,7 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
              << value_cell(v.rmse, fixed(v.rmse, 4)) << value_cell(v.pareto, v.pareto ? "★" : "", 0)
              << value_cell(v.rmse_calibrated, fixed(v.rmse_calibrated, 4)) << value_cell(v.pareto_calibrated, v.pareto_calibrated ? "★" : "", 0)
              << value_cell(v.rmse_accumulated, fixed(v.rmse_accumulated, 4)) << value_cell(v.pareto_accumulated, v.pareto_accumulated ? "★" : "", 0)
+             << value_cell(v.bent_degrees, fixed(v.bent_degrees, 1, ""))
              << value_cell(v.ao_instructions, std::to_string(v.ao_instructions), 0) << text_cell(raw_non_finite(v.raw, v.raw_measured), "num")
              << "</tr>\n";
     }

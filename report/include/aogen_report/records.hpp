@@ -4,7 +4,7 @@
 // WHAT
 //   scene_record     a scene as run, its reference, its clocks and timing rounds
 //   ao_readback      a variant's AO as read back (8-bit), upsampled on demand
-//   run_record       one variant on one scene: errors, powers, raw counts, times
+//   run_record       one variant on one scene: errors, powers, raw counts, times, bent normals
 //   variant_record   one variant over every scene, with its summaries
 //   feature_saving   a scene-selected variant beside its everything-on twin
 //   report_data      all of it: what run.hpp fills, summary.hpp summarises and
@@ -86,6 +86,8 @@ struct run_record {
     aogen::vulkan::spread bandwidth_ms;           // its bandwidth floor, likewise
     std::vector<double> round_ms;                 // the chain's median of each timing round
     ao_readback ao;                               // as read back (default parameters)
+    bent_normal_metrics bent;                     // a -bn variant's bent normals against the truth's; NaN otherwise
+    std::vector<uint8_t> bent_normal_rgb;         // its world-space bent normals, full resolution (normal_bytes): the strips'
     bool ran() const { return skipped.empty(); }
 };
 
@@ -99,6 +101,7 @@ struct variant_record {
     // Summaries over the scenes it ran on.
     double rmse = std::numeric_limits<double>::quiet_NaN(), rmse_calibrated = rmse;
     double rmse_accumulated = rmse;                 // after report_data::frames frames
+    double bent_degrees = rmse;                     // mean over scenes of the bent normals' mean angular error (-bn)
     double ms = rmse, ms_p10 = rmse, ms_p90 = rmse; // medians over scenes of each scene's median, p10, p90
     double floor_ms = rmse, floor_ratio = rmse;     // median over scenes of the fetch floor, and of time / floor
     double bandwidth_ms = rmse, bandwidth_ratio = rmse; // the same of the bandwidth floor

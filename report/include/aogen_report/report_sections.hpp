@@ -133,7 +133,10 @@ inline std::string how_to_read(int frames)
            "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
            "so no scene is scored with a fit made on it. *After " + std::to_string(frames) + " frames*: the plain mean of the variant's first " +
            std::to_string(frames) + " frames, each turning the noise by the frame index's next rotation, with a still camera — what "
-           "TAA's history shows once it has that many frames, the default output being frame 0. Time is the median over scenes of each scene's median (p10–p90 likewise). "
+           "TAA's history shows once it has that many frames, the default output being frame 0. *Bent normal °* (`-bn` variants): "
+           "the mean angle between the variant's bent normal and the traced one (the cosine-weighted mean of the unoccluded "
+           "directions), over the pixels that show geometry, the mean over the scenes; the strips add a row per such variant "
+           "(reference | variant as normal-map colours | angle, yellow at 30°). Time is the median over scenes of each scene's median (p10–p90 likewise). "
            "*Floor* is the variant's fetch floor: its passes' texel fetches at the same positions with none of the shading "
            "(report/floor/), timed in the same rounds; *× floor* is time / floor, the median over scenes — near 1 the "
            "variant is bound by its memory traffic, far above it by its arithmetic. *BW floor* is its bandwidth floor: each "

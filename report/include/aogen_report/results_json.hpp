@@ -15,11 +15,13 @@
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
 //                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, bandwidth_ms, bandwidth_ratio, rmse, rmse_calibrated,
 //                   rmse_accumulated,                  // of the mean of "frames" frames (temporal.hpp)
+//                   bent_degrees,                      // -bn: mean over scenes of the bent normals' mean angle to the truth's; else null
 //                   raw: {measured, nan, inf, below_zero, above_one, max_excess}, pareto, pareto_calibrated, pareto_accumulated,
 //                   scenes: [{scene, skipped | {ms, ms_p10, ms_p90, pass_ms, floor_ms, bandwidth_ms, power,
 //                             raw: [{nan, inf, below_zero, above_one, max_excess} per pass],
 //                             default: {rmse, mae, mean_signed, p99_abs, non_finite, pixels},
-//                             calibrated: {...}, accumulated: {...}}]}],
+//                             calibrated: {...}, accumulated: {...},
+//                             bent_normal: {mean_degrees, p90_degrees, missing, pixels}}]}],   // -bn variants only
 //     "feature_saving": [{selected, everything_on, selected_instructions, everything_on_instructions,
 //                         selected_ms, everything_on_ms, ratio, ratio_p10, ratio_p90,
 //                         selected_rmse, everything_on_rmse, left_out}] }
@@ -79,6 +81,9 @@ inline nlohmann::json run_json(const run_record& r, const std::string& scene)
     e["default"] = metrics_json(r.plain);
     e["calibrated"] = metrics_json(r.calibrated);
     e["accumulated"] = metrics_json(r.accumulated);
+    if (r.bent.pixels > 0)
+        e["bent_normal"] = {{"mean_degrees", number(r.bent.mean_degrees)}, {"p90_degrees", number(r.bent.p90_degrees)},
+                            {"missing", r.bent.missing}, {"pixels", r.bent.pixels}};
     return e;
 }
 
@@ -105,6 +110,7 @@ inline nlohmann::json variant_json(const variant_record& v, const std::vector<sc
             {"rmse", number(v.rmse)},
             {"rmse_calibrated", number(v.rmse_calibrated)},
             {"rmse_accumulated", number(v.rmse_accumulated)},
+            {"bent_degrees", number(v.bent_degrees)},
             {"raw", raw},
             {"pareto", v.pareto},
             {"pareto_calibrated", v.pareto_calibrated},

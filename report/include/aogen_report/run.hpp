@@ -180,6 +180,10 @@ inline run_record score(const compiled_variant& c, scene_bench& bench, int frame
     const bench_run out = bench.run(chain, settings);
     r.raw = out.out.raw;
     r.ao = ao_readback::of(out.out, out.scale);
+    if (!out.full_bent_normal.empty()) {
+        r.bent = compare_bent_normals(out.full_bent_normal, bench.truth().bent_normal, bench.truth().valid);
+        r.bent_normal_rgb = normal_bytes(out.full_bent_normal);
+    }
     std::vector<double> sum(out.full.begin(), out.full.end());
     for (int f = 1; f < frames; ++f) {
         settings.frame = uint32_t(f);

@@ -65,6 +65,7 @@ struct bench_inputs {
 struct bench_run {
     aogen::vulkan::chain_result out; // the chain's output, at output_size()
     std::vector<float> full;         // out.ao upsampled to the screen (nearest)
+    std::vector<float> full_bent_normal; // a -bn chain's bent normals in world space, 3 per screen pixel (nearest); else empty
     int scale = 1;                   // screen pixels per output pixel along each axis
 };
 
@@ -152,7 +153,21 @@ public:
         }
         r.scale = aogen::output_scale(v);
         r.full = upsample(r.out.ao, r.out.width, r.out.height, r.scale, width(), height());
+        if (!r.out.bent_normal.empty())
+            r.full_bent_normal = upsample(view_to_world(r.out.bent_normal, for_variant(scene_, v).camera.world_to_view()), r.out.width,
+                                          r.out.height, r.scale, width(), height(), 3);
         return r;
+    }
+
+    // View-space directions (3 floats each) turned into world space by the inverse of
+    // world_to_view's rotation (its transpose); zero stays zero.
+    static std::vector<float> view_to_world(std::vector<float> n, const aogen::mat4& world_to_view)
+    {
+        for (size_t i = 0; i + 2 < n.size(); i += 3) {
+            const float view[3] = {n[i], n[i + 1], n[i + 2]};
+            for (int j = 0; j < 3; ++j) n[i + j] = world_to_view[j][0] * view[0] + world_to_view[j][1] * view[1] + world_to_view[j][2] * view[2];
+        }
+        return n;
     }
 
     // `g` with `faults` planted: a NaN depth, or a zero normal (RGB 0).

@@ -14,7 +14,8 @@
 //        same on the scene scaled by each of scale_factors(), compared pixel by pixel with
 //        the scene's own;
 //   and judges it: raw NaN/Inf, raw excess beyond [0, 1], background exactly 1, output in
-//   [0, 1], RMSE against the twin's, the depth differences. The first check that fails
+//   [0, 1], a bent normal on every other pixel (-bn variants), RMSE against the twin's, the
+//   depth differences. The first check that fails
 //   decides ("NaN 3 in blur_x", "background 12 px not 1", "RMSE 0.21 > 1.5 × 0.06 + 0.03").
 //   Variants a case cannot run (a normal-buffer variant where the renderer has none) are
 //   listed, not judged. Pixels where a fault was planted are left out of the error (the
@@ -62,6 +63,7 @@ struct suite_run {
     std::string decided_by;          // the first failing check, or what the error criterion read
     aogen::vulkan::raw_counts raw;   // the case's scene, every pass
     size_t background_pixels = 0, background_not_one = 0;
+    size_t bent_pixels = 0, bent_missing = 0; // -bn variants: the other pixels, and those without a bent normal
     double rmse = 0, twin_rmse = 0, error_limit = 0;
     double depth_max = 0, depth_mean = 0; // compare_depth only
     double twin_pixel_max = 0;            // faults only: the largest difference from the twin beyond fault_reach
@@ -297,6 +299,10 @@ inline void judge(suite_run& r, const stability_criterion& k, const std::vector<
         r.decided_by = std::to_string(r.background_not_one) + " of " + std::to_string(r.background_pixels) + " background/fault pixels not exactly 1";
         return;
     }
+    if (r.bent_missing) {
+        r.decided_by = std::to_string(r.bent_missing) + " of " + std::to_string(r.bent_pixels) + " surface pixels without a bent normal";
+        return;
+    }
     if (k.compare_depth && (r.depth_max > k.depth_max || r.depth_mean > k.depth_mean)) {
         r.decided_by = "depth conventions differ by up to " + fixed_text(r.depth_max, 4) + " (mean " + fixed_text(r.depth_mean, 5) + ")";
         return;
@@ -377,6 +383,10 @@ inline suite_data run_suite(const suite_settings& settings)
             for (const aogen::vulkan::raw_counts& k : a.out().raw) r.raw += k;
             for (size_t i = 0; i < a.must_be_one.size(); ++i)
                 if (a.must_be_one[i]) r.background_pixels += 1, r.background_not_one += a.out().ao[i] != 1.0f;
+            // A -bn variant's bent normal: unit wherever the AO is not held at 1 (aogen/bent_normals.hpp's none is 0).
+            const std::vector<float>& bent = a.out().bent_normal;
+            for (size_t i = 0; i < a.must_be_one.size() && !bent.empty(); ++i)
+                if (!a.must_be_one[i]) r.bent_pixels += 1, r.bent_missing += bent[3 * i] == 0.0f && bent[3 * i + 1] == 0.0f && bent[3 * i + 2] == 0.0f;
             r.rmse = compare(a.run.full, scene.truth().ao, detail::scored_pixels(scene.truth(), a.faulted)).rmse;
             r.twin_rmse = compare(b.run.full, twin.truth().ao, detail::twin_scored_pixels(c, twin.truth())).rmse;
             if (!c.faults.empty()) detail::compare_with_twin(r, a, b, c);

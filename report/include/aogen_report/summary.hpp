@@ -5,7 +5,8 @@
 //
 // The calibrated column: ao^p, p fitted on the other scenes (calibrate.hpp). Per variant:
 // the mean RMSE over the scenes it ran on (of the single frame, calibrated, and after the
-// report's frames), the median of its per-scene median times, p10
+// report's frames), the mean of its bent normals' mean angular error (-bn variants: over the
+// scenes with a surface pixel), the median of its per-scene median times, p10
 // and p90, its fetch floor and time / floor. Pareto-optimal variants by time against
 // default, calibrated and accumulated RMSE (pareto.hpp). The feature saving: each SSAO variant without
 // the point-cloud fallback against its twin with it on the mesh-only scenes.
@@ -51,14 +52,15 @@ inline void calibrate(variant_record& v, const std::vector<scene_record>& scenes
 
 inline void summarise_variant(variant_record& v)
 {
-    double plain = 0, calibrated = 0, accumulated = 0;
-    int count = 0;
+    double plain = 0, calibrated = 0, accumulated = 0, bent = 0;
+    int count = 0, bent_count = 0;
     std::vector<double> ms, p10, p90, floors, ratios, bandwidths, bandwidth_ratios;
     v.raw = {};
     v.raw_measured = false;
     for (const run_record& r : v.runs) {
         if (!r.ran()) continue;
         plain += r.plain.rmse, calibrated += r.calibrated.rmse, accumulated += r.accumulated.rmse, ++count;
+        if (r.bent.pixels > 0) bent += r.bent.mean_degrees, ++bent_count;
         for (const aogen::vulkan::raw_counts& c : r.raw) v.raw += c;
         v.raw_measured = v.raw_measured || !r.raw.empty();
         ms.push_back(r.ms.median), p10.push_back(r.ms.p10), p90.push_back(r.ms.p90);
@@ -66,6 +68,7 @@ inline void summarise_variant(variant_record& v)
         bandwidths.push_back(r.bandwidth_ms.median), bandwidth_ratios.push_back(r.ms.median / r.bandwidth_ms.median);
     }
     if (count > 0) v.rmse = plain / count, v.rmse_calibrated = calibrated / count, v.rmse_accumulated = accumulated / count;
+    if (bent_count > 0) v.bent_degrees = bent / bent_count;
     v.ms = median(ms), v.ms_p10 = median(p10), v.ms_p90 = median(p90);
     v.floor_ms = median(floors), v.floor_ratio = median(ratios);
     v.bandwidth_ms = median(bandwidths), v.bandwidth_ratio = median(bandwidth_ratios);

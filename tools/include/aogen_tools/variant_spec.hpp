@@ -12,7 +12,8 @@
 //   precision (fp32|fp16: 16-bit arithmetic in the AO pass, variant extra -fp16),
 //   upsample (depth_aware|nearest: how a half-resolution target reaches the screen,
 //   variant extra -nearest), multi_bounce (off|on: the last pass's multi-bounce, variant
-//   extra -mb).
+//   extra -mb), bent_normals (off|on: bent normals beside the AO, variant extra -bn; GTAO
+//   and VBAO compute variants).
 //
 // A scene file (`--scene SCENE.json`) says what the renderer has and needs:
 //   {"normals": "gbuffer_world" | "gbuffer_view" | "reconstructed", "point_clouds": false,
@@ -106,12 +107,16 @@ inline void require_axes_used(const json_reader& in, const std::vector<technique
     for (const char* key : {"slices", "steps"})
         if (in.has(key) && !slices)
             fail(key_path(in.path(), key), "is a GTAO and VBAO axis, and this matrix makes neither", "valid: leave it out, or add \"gtao\" or \"vbao\" to technique");
+    if (in.has("bent_normals") && !slices)
+        fail(key_path(in.path(), "bent_normals"), "is a GTAO and VBAO axis (bent normals come from their slices), and this matrix makes neither",
+             "valid: leave it out, or add \"gtao\" or \"vbao\" to technique");
 }
 
 inline variant_matrix matrix_from_json(const json_reader& in)
 {
     in.only_keys({"technique", "samples", "slices", "steps", "blur", "bilateral_depth", "normals", "point_cloud",
-                  "depth", "projection", "resolution", "stage", "range_check", "output", "decisions", "precision", "upsample", "multi_bounce"});
+                  "depth", "projection", "resolution", "stage", "range_check", "output", "decisions", "precision", "upsample", "multi_bounce",
+                  "bent_normals"});
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
     require_axes_used(in, m.techniques);
@@ -132,6 +137,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     if (in.has("precision")) m.fp16 = bool_list(in, "precision", "fp16", "fp32");
     if (in.has("upsample")) m.upsample = name_list(in, "upsample", upsample_mode_names);
     if (in.has("multi_bounce")) m.multi_bounce = bool_list(in, "multi_bounce", "on", "off");
+    if (in.has("bent_normals")) m.bent_normals = bool_list(in, "bent_normals", "on", "off");
     return m;
 }
 
