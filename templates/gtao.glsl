@@ -125,10 +125,11 @@ float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, ve
 }
 
 // The horizon angles (h-, h+) from the horizon cosines of the two sides (-1: no horizon),
-// clamped to the hemisphere around the projected normal's angle n (clamped to [-pi/2, pi/2]).
-ao_half2 ao_gtao_horizons(ao_half n, ao_half cos_behind, ao_half cos_ahead)
+// clamped to the hemisphere around the projected normal's angle n.
+ao_half2 ao_gtao_horizons(ao_half n_angle, ao_half cos_behind, ao_half cos_ahead)
 {
     const ao_half half_pi = ao_half(AO_HALF_PI);
+    ao_half n = clamp(n_angle, -half_pi, half_pi);
     // ao_is_finite first: clamp() of a NaN is undefined; a NaN horizon is no horizon.
     ao_half c_ahead = ao_is_finite(float(cos_ahead)) ? clamp(cos_ahead, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
     ao_half c_behind = ao_is_finite(float(cos_behind)) ? clamp(cos_behind, ao_half(-1.0), ao_half(1.0)) : ao_half(-1.0);
@@ -138,12 +139,14 @@ ao_half2 ao_gtao_horizons(ao_half n, ao_half cos_behind, ao_half cos_ahead)
     return ao_half2(h_behind, h_ahead);
 }
 
-// The slice integral a(h-, n) + a(h+, n), without the |n_p| factor.
-ao_half ao_gtao_slice_integral(ao_half n, ao_half2 horizons)
+// The slice integral a(h-, n) + a(h+, n), without the |n_p| factor, from the horizon
+// cosines of the two sides (-1: no horizon) and the projected normal's angle n.
+ao_half ao_gtao_slice_integral(ao_half n_angle, ao_half cos_behind, ao_half cos_ahead)
 {
+    ao_half n = clamp(n_angle, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
+    ao_half2 horizons = ao_gtao_horizons(n, cos_behind, cos_ahead);
     return ao_slice_arc(horizons.x, n) + ao_slice_arc(horizons.y, n);
 }
-
 
 ao_value ao_pass(ivec2 target_pixel)
 {
@@ -183,14 +186,14 @@ ao_value ao_pass(ivec2 target_pixel)
             cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, distance, p, P, V, max_distance, -sin_n));
             cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, distance, p, P, V, max_distance, sin_n));
         }
-        ao_half n_angle = clamp(projected.y, ao_half(-AO_HALF_PI), ao_half(AO_HALF_PI));
-        ao_half2 horizons = ao_gtao_horizons(n_angle, ao_half(cos_behind), ao_half(cos_ahead));
-        ao_half integral = ao_gtao_slice_integral(n_angle, horizons);
+        ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
         visibility_sum += float(projected.x * integral);
         unoccluded_sum += float(projected.x * ao_slice_unoccluded(projected.y));
 #if defined(AO_BENT_NORMALS)
-        vec2 bent = float(projected.x) * ao_slice_bent(float(n_angle), vec2(horizons)); // common/slices.glsl
-        vec2 open = float(projected.x) * ao_slice_open_bent(float(n_angle));
+        // The same horizons again (the compiler computes them once), and the slice's vectors.
+        vec2 horizons = vec2(ao_gtao_horizons(projected.y, ao_half(cos_behind), ao_half(cos_ahead)));
+        vec2 bent = float(projected.x) * ao_slice_bent(float(projected.y), horizons); // common/slices.glsl
+        vec2 open = float(projected.x) * ao_slice_open_bent(float(projected.y));
         bent_sum += bent.x * V + bent.y * side;
         open_sum += open.x * V + open.y * side;
 #endif

@@ -8,15 +8,16 @@
 //   indirect light. Its passes write four channels (codegen::output_format_of widens r8 to
 //   rgba8):
 //       .r    the AO, as every variant writes it
-//       .gba  the unit bent normal n as n * 0.5 + 0.5
-//   A pixel with no bent normal -- background, or no surface normal to bend -- stores the zero
-//   vector, (0.5, 0.5, 0.5): in 8 bits it decodes to a length of 0.0068, where a unit normal
-//   decodes to a length within 0.01 of 1, so `length < 0.5` tells the two apart.
+//       .gba  the unit bent normal n as (127 n + 128) / 255: in 8 bits the bytes 128 + 127 n
+//   (not n * 0.5 + 0.5, which puts a zero component on a rounding's midpoint, byte 127.5,
+//   where two compilers of one shader can round apart). A pixel with no bent normal --
+//   background, or no surface normal to bend -- stores the zero vector, bytes (128, 128, 128),
+//   which decodes to exactly 0; a unit normal decodes to a length within 0.01 of 1.
 //   The shader side is common/core.glsl's ao_value and ao_output_texel; a renderer decodes it
-//   as decode_bent_normal does: n = texel.gba * 2 - 1, renormalised.
+//   as decode_bent_normal does: n = (texel.gba * 255 - 128) / 127, renormalised.
 //
 // USAGE
-//     aogen::vec3 n = aogen::decode_bent_normal(g, b, a);              // one rgba8 texel's .gba
+//     aogen::vec3 n = aogen::decode_bent_normal(g, b, a);              // one rgba8 texel's .gba bytes
 //     std::vector<float> ns = aogen::decode_bent_normals(rgba, texels); // 3 floats per texel
 #pragma once
 
@@ -32,7 +33,7 @@ namespace aogen {
 // The bent normal of one rgba8 texel's .gba bytes: unit, or (0, 0, 0) where it stores none.
 inline vec3 decode_bent_normal(uint8_t g, uint8_t b, uint8_t a)
 {
-    const vec3 n{g / 255.0f * 2.0f - 1.0f, b / 255.0f * 2.0f - 1.0f, a / 255.0f * 2.0f - 1.0f};
+    const vec3 n{(float(g) - 128.0f) / 127.0f, (float(b) - 128.0f) / 127.0f, (float(a) - 128.0f) / 127.0f};
     const float length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
     if (!(length >= 0.5f)) return {0.0f, 0.0f, 0.0f};
     return {n.x / length, n.y / length, n.z / length};

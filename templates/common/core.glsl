@@ -218,10 +218,13 @@ float ao_output(float ao)
 // the normals is the direction of their weighted mean, renormalised when it is written, so
 // one template serves both and a -bn variant's AO is its twin's bit for bit.
 //   Stored (ao_output_texel) in a four-channel image (aogen::codegen::output_format_of):
-//   .r the AO as ao_output writes it, .gba the unit normal as n * 0.5 + 0.5 -- a unorm
-//   channel holds it, 8 bits put it within 0.5 degrees. A pixel with no bent normal
-//   (background, no surface normal) stores (0.5, 0.5, 0.5): the zero vector, which the
-//   filters skip by weight and a reader recognises by its length.
+//   .r the AO as ao_output writes it, .gba the unit normal as (127 n + 128) / 255 -- in 8
+//   bits the byte 128 + 127 n, within 0.5 degrees. Not n * 0.5 + 0.5: that puts a zero
+//   component at byte 127.5, a rounding's midpoint, where a one-ulp difference between two
+//   compilers of the same shader (GL's GLSL and Vulkan's SPIR-V front ends) picks another
+//   byte; here zero is byte 128 exactly. A pixel with no bent normal (background, no surface
+//   normal) stores the zero vector, (128, 128, 128) / 255, which a reader recognises by its
+//   length and the filters never see (they skip background by weight).
 #if defined(AO_BENT_NORMALS)
 #if defined(AO_STAGE_FRAGMENT)
 #error aogen: bent normals need the compute stage (a fragment pass's target is one channel)
@@ -231,12 +234,12 @@ float ao_output(float ao)
 ao_value ao_make_value(float ao, vec3 bent_normal) { return vec4(ao, bent_normal); }
 float ao_value_ao(ao_value v) { return v.x; }
 vec3 ao_value_bent(ao_value v) { return v.yzw; }
-// A unit normal in [0, 1]^3; the zero vector (and anything not finite) as 0.5.
+// A unit normal as (127 n + 128) / 255; the zero vector (and anything not finite) as 128 / 255.
 vec3 ao_encode_normal(vec3 n)
 {
     float length_squared = dot(n, n);
-    if (!(length_squared > 1e-12 && length_squared < 1e30)) return vec3(0.5); // NaN fails too
-    return clamp(n * inversesqrt(length_squared) * 0.5 + 0.5, 0.0, 1.0);
+    if (!(length_squared > 1e-12 && length_squared < 1e30)) return vec3(128.0 / 255.0); // NaN fails too
+    return clamp(n * inversesqrt(length_squared) * (127.0 / 255.0) + (128.0 / 255.0), 0.0, 1.0);
 }
 vec4 ao_output_texel(ao_value v) { return vec4(ao_output(v.x), ao_encode_normal(v.yzw)); }
 ao_value4 ao_quad_of(vec4 ao) { return mat4(vec4(ao.x, 0.0, 0.0, 0.0), vec4(ao.y, 0.0, 0.0, 0.0), vec4(ao.z, 0.0, 0.0, 0.0), vec4(ao.w, 0.0, 0.0, 0.0)); }
@@ -245,7 +248,7 @@ ao_value4 ao_quad_of(vec4 ao) { return mat4(vec4(ao.x, 0.0, 0.0, 0.0), vec4(ao.y
 ao_value ao_read_input(ivec2 q)
 {
     vec4 texel = texelFetch(u_ao_input, q, 0);
-    return vec4(ao_finalize(texel.r), texel.gba * 2.0 - 1.0);
+    return vec4(ao_finalize(texel.r), (texel.gba * 255.0 - 128.0) / 127.0);
 }
 #endif
 #else

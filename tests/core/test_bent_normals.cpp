@@ -102,11 +102,11 @@ TEST_CASE("bent normals: the default matrix scores five -bn variants with the is
                                            "vbao-3x3-half-bilateral-gbufworld-std-persp-cs-bn"});
 }
 
-TEST_CASE("bent normals: decode_bent_normal reads the shader's encoding back within half a degree and 0.5 as none", "[bent_normals]")
+TEST_CASE("bent normals: decode_bent_normal reads the shader's encoding back within half a degree and byte 128 as none", "[bent_normals]")
 {
     // The shader's encoding (common/core.glsl's ao_encode_normal), rounded to 8 bits as a
-    // UNORM store rounds: n * 0.5 + 0.5.
-    const auto unorm = [](float x) { return uint8_t(std::lround((x * 0.5f + 0.5f) * 255.0f)); };
+    // UNORM store rounds: (127 n + 128) / 255.
+    const auto unorm = [](float x) { return uint8_t(std::lround((x * (127.0f / 255.0f) + 128.0f / 255.0f) * 255.0f)); };
     double worst = 0;
     for (int i = 0; i < 2000; ++i) {
         // Directions spread over the sphere (a Fibonacci lattice).
@@ -123,8 +123,11 @@ TEST_CASE("bent normals: decode_bent_normal reads the shader's encoding back wit
     const uint8_t texels[8] = {200, 128, 255, 128, 255, 128, 128, 128}; // (AO, +y) then AO 1 with none
     const std::vector<float> both = decode_bent_normals(texels, 2);
     REQUIRE(both.size() == 6);
-    CHECK(both[0] == Approx(0.0f).margin(0.005)); // 128 is half a step above 0.5
-    CHECK(both[1] == Approx(1.0f).margin(1e-4));
-    CHECK(both[2] == Approx(0.0f).margin(0.005));
+    CHECK(both[0] == 0.0f); // byte 128 is zero exactly
+    CHECK(both[1] == 1.0f);
+    CHECK(both[2] == 0.0f);
+    // A zero component is a whole byte, not a rounding's midpoint: +-1e-6 encode alike.
+    CHECK(unorm(1e-6f) == 128);
+    CHECK(unorm(-1e-6f) == 128);
     CHECK((both[3] == 0.0f && both[4] == 0.0f && both[5] == 0.0f));
 }

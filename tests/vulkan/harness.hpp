@@ -184,6 +184,16 @@ inline size_t full_pixel_of(const variant& v, int w, int h, int x, int y)
     return pixel(w, std::min(x * k, w - 1), std::min(y * k, h - 1));
 }
 
+// "" when a and b are equal, else where they first differ and how: "size 12 against 9", or
+// "[7]: 0.25 against 0.5" -- what a failing CHECK of two long vectors should say.
+inline std::string first_difference(const std::vector<float>& a, const std::vector<float>& b)
+{
+    if (a.size() != b.size()) return "size " + std::to_string(a.size()) + " against " + std::to_string(b.size());
+    for (size_t i = 0; i < a.size(); ++i)
+        if (!(a[i] == b[i])) return "[" + std::to_string(i) + "]: " + std::to_string(a[i]) + " against " + std::to_string(b[i]);
+    return "";
+}
+
 inline void require_clean(vulkan::context& ctx)
 {
     const std::vector<std::string> m = ctx.messages();
