@@ -50,11 +50,15 @@ inline std::vector<float> upsample(const std::vector<float>& src, int w, int h, 
 
 // Unit normals (3 floats per pixel) as 8-bit colours, n * 0.5 + 0.5 per channel (a normal
 // map's look: +x red, +y green, +z blue); a zero or non-finite normal becomes (128, 128, 128).
+inline uint8_t normal_byte(float x)
+{
+    return std::isfinite(x) ? uint8_t(std::lround((std::clamp(x, -1.0f, 1.0f) * 0.5f + 0.5f) * 255.0f)) : uint8_t(128);
+}
+
 inline std::vector<uint8_t> normal_bytes(const std::vector<float>& normals)
 {
-    std::vector<uint8_t> out(normals.size(), 128);
-    for (size_t i = 0; i < normals.size(); ++i)
-        if (std::isfinite(normals[i])) out[i] = uint8_t(std::lround((std::clamp(normals[i], -1.0f, 1.0f) * 0.5f + 0.5f) * 255.0f));
+    std::vector<uint8_t> out(normals.size());
+    for (size_t i = 0; i < normals.size(); ++i) out[i] = normal_byte(normals[i]);
     return out;
 }
 
@@ -187,8 +191,7 @@ private:
     static rgb normal_colour(const float* n)
     {
         if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]))) return {255, 0, 255};
-        const auto c = [](float x) { return uint8_t(std::lround((std::clamp(x, -1.0f, 1.0f) * 0.5f + 0.5f) * 255.0f)); };
-        return {c(n[0]), c(n[1]), c(n[2])};
+        return {normal_byte(n[0]), normal_byte(n[1]), normal_byte(n[2])};
     }
 
     int margin() const { return strip_label_margin * text_scale_; }
