@@ -47,6 +47,12 @@ struct list_command {
             {"range check", names::list(ssao_range_check_names) + " (ssao only)", "-rc004 for seed004"},
             {"output", names::list(ssao_output_names) + " (ssao only)", "-powint"},
             {"precision", "fp32, fp16 (16-bit AO-pass arithmetic, not sao; spv, hlsl, msl targets)", "-fp16"},
+            {"decisions", names::list(ssao_decisions_names) + " (ssao only)", "-step"},
+            {"upsample", names::list(upsample_mode_names) + " (half resolution)", "-nearest"},
+            {"depth mips", "1..5 levels (compute; default 1, none)", "-mip<N>"},
+            {"deinterleaved", "off, on (compute)", "-deint"},
+            {"bent normals", "off, on (gtao, vbao; compute)", "-bn"},
+            {"multi-bounce", names::list(multi_bounce_mode_names) + " (gbuffer: each pixel's albedo from the G-buffer)", "-mb | -mbg"},
             {"workgroup", "1..32 x 1..32, at most 1024 (compute; default 8x8)", "-wg<X>x<Y>"},
         };
         size_t axis_width = 4, values_width = 6;

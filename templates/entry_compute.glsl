@@ -66,7 +66,7 @@ void main()
 #if defined(AO_DIAGNOSTICS)
         imageStore(u_raw, pixel, vec4(ao_value_ao(ao[k])));
 #endif
-        imageStore(u_output, pixel, ao_output_texel(ao[k]));
+        imageStore(u_output, pixel, ao_output_texel(ao[k], pixel));
     }
 }
 #else
@@ -85,6 +85,6 @@ void main()
 #if defined(AO_DIAGNOSTICS)
     imageStore(u_raw, pixel, vec4(ao_value_ao(ao)));
 #endif
-    imageStore(u_output, pixel, ao_output_texel(ao));
+    imageStore(u_output, pixel, ao_output_texel(ao, pixel));
 }
 #endif

@@ -19,5 +19,5 @@ void main()
 #if defined(AO_DIAGNOSTICS)
     imageStore(u_raw, pixel, vec4(ao));
 #endif
-    o_ao = ao_output(ao);
+    o_ao = ao_output(ao, pixel);
 }

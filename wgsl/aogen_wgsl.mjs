@@ -169,6 +169,8 @@ async function toSpirv() {
 //                          shader drawn with that vertex shader's fullscreen triangle), its
 //                          output's size, pixels per invocation; uniforms<i>.bin its uniform
 //                          bytes (i from 0); it reads the previous pass's output as ao_input
+//   albedo BINDING         the pass above also reads albedo.f32 (the G-buffer's W×H×4 floats,
+//                          rgba32float) at BINDING (a -mbg variant's last pass)
 // Bindings follow aogen/bindings.hpp's webgpu model; workgroups are the WGSL's @workgroup_size.
 // Compute passes write rgba8unorm storage textures, fragment passes r8unorm render targets.
 async function runChain() {
@@ -191,17 +193,20 @@ async function runChain() {
         device.queue.writeTexture({ texture: t }, data, { bytesPerRow: w * bpp }, [w, h]);
         return t;
     };
-    let depth, normals, noise;
+    let depth, normals, albedo, noise;
     const passes = [];
     for (const l of lines) {
         if (l[0] === "gbuffer") {
             const w = +l[1], h = +l[2];
             depth = upload(w, h, "r32float", floats("depth.f32"), 4);
             if (existsSync(join(dir, "normals.f32"))) normals = upload(w, h, "rgba32float", floats("normals.f32"), 16);
+            if (existsSync(join(dir, "albedo.f32"))) albedo = upload(w, h, "rgba32float", floats("albedo.f32"), 16);
         } else if (l[0] === "noise") {
             noise = upload(+l[1], +l[1], "rgba32float", floats("noise.f32"), 16);
         } else if (l[0] === "pass") {
             passes.push({ file: l[1], w: +l[2], h: +l[3], ppi: +l[4], vertex: l[5] });
+        } else if (l[0] === "albedo") {
+            passes[passes.length - 1].albedoBinding = +l[1];
         }
     }
     const sampler = device.createSampler({ addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
@@ -226,6 +231,7 @@ async function runChain() {
             usage: (fragment ? usage.RENDER_ATTACHMENT : usage.STORAGE_BINDING) | usage.TEXTURE_BINDING | usage.COPY_SRC,
         });
         if (!fragment) roles.push([5, out, output]);
+        if (p.albedoBinding !== undefined) roles.push([p.albedoBinding, tex, albedo]);
         const layout = device.createBindGroupLayout({ entries: roles.map(([binding, kind]) => entry(binding, kind)) });
         const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
         const bytes = readFileSync(join(dir, `uniforms${i}.bin`));

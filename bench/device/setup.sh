@@ -14,3 +14,5 @@ mkdir -p /usr/share/assimp/models && cp -r /tmp/a/models/* /usr/share/assimp/mod
 B=/tmp/a/bin
 L=$OUT/log.txt
 printf '#!/bin/bash\n[ "$1" = "-c" ] && exit 0\necho none > "$3"\n' > /tmp/fakepy; chmod +x /tmp/fakepy
+# The GPU's clocks and power now, appended to the log (run scripts call it around each phase).
+clocks() { nvidia-smi --query-gpu=name,clocks.sm,clocks.max.sm,clocks.mem,power.draw --format=csv >> $L 2>&1; }

@@ -10,7 +10,6 @@
 # Carries .carry/pack.tar.xz and .gl (setup.sh).
 cd "$(dirname "$0")/../.."
 . bench/device/setup.sh
-clocks() { nvidia-smi --query-gpu=name,clocks.sm,clocks.max.sm,clocks.mem,power.draw --format=csv >> $L 2>&1; }
 clocks
 echo "== tests" >> $L
 AOGEN_TESTS_OPTIONAL_DEPS=1 timeout 240 $B/aogen_vulkan_tests "vulkan: frame f*,vulkan: a -mb*,vulkan: an albedo*,vulkan: a -deint*,vulkan: a -bn*,vulkan: a bent normal*" >> $L 2>&1; echo "rc $?" >> $L

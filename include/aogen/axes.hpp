@@ -19,6 +19,7 @@
 //     blur_mode          the denoise pass: bilateral, box, denoise or none
 //     bilateral_depth    the bilateral blur's depth term
 //     upsample_mode      how a half-resolution target reaches the screen
+//     multi_bounce_mode  whether, and with which albedo, the last pass adds multi-bounce light
 //
 // USAGE
 //     #include <aogen/axes.hpp>
@@ -203,11 +204,31 @@ inline constexpr std::array<enum_name<upsample_mode>, 2> upsample_mode_names{{
     {upsample_mode::nearest, "nearest"},
 }};
 
+// Multi-bounce (the GTAO paper's fit, common/core.glsl's ao_multi_bounce): whether the
+// chain's last pass brightens the AO it writes by the light inter-reflected between surfaces
+// of albedo rho, and where rho comes from.
+enum class multi_bounce_mode {
+    off,
+    // One albedo for the whole image: finalize_params::albedo, a uniform (-mb).
+    uniform_albedo,
+    // Each pixel's own, from the renderer's albedo G-buffer (-mbg; bindings.hpp's gbuffer_albedo
+    // role): for an engine with materials, whose dark and bright surfaces bounce apart.
+    gbuffer_albedo,
+};
+// The spec's spellings (JSON's `multi_bounce`): "on" is the uniform albedo, as it was when
+// multi-bounce had no other source.
+inline constexpr std::array<enum_name<multi_bounce_mode>, 3> multi_bounce_mode_names{{
+    {multi_bounce_mode::off, "off"},
+    {multi_bounce_mode::uniform_albedo, "on"},
+    {multi_bounce_mode::gbuffer_albedo, "gbuffer"},
+}};
+
 static_assert(names::distinct(technique_names) && names::distinct(pipeline_stage_names) &&
               names::distinct(projection_kind_names) && names::distinct(depth_convention_names) &&
               names::distinct(normal_source_names) && names::distinct(ssao_output_names) &&
               names::distinct(ssao_range_check_names) && names::distinct(ssao_decisions_names) && names::distinct(blur_mode_names) &&
-              names::distinct(bilateral_depth_names) && names::distinct(upsample_mode_names));
+              names::distinct(bilateral_depth_names) && names::distinct(upsample_mode_names) &&
+              names::distinct(multi_bounce_mode_names));
 
 // Enum -> canonical name. A value outside the enumeration throws aogen::error.
 inline const char* to_name(technique v) { return names::name_of(technique_names, v, "technique"); }
@@ -221,6 +242,7 @@ inline const char* to_name(ssao_decisions v) { return names::name_of(ssao_decisi
 inline const char* to_name(blur_mode v) { return names::name_of(blur_mode_names, v, "blur"); }
 inline const char* to_name(bilateral_depth v) { return names::name_of(bilateral_depth_names, v, "bilateral depth"); }
 inline const char* to_name(upsample_mode v) { return names::name_of(upsample_mode_names, v, "upsample"); }
+inline const char* to_name(multi_bounce_mode v) { return names::name_of(multi_bounce_mode_names, v, "multi-bounce"); }
 
 // Name -> enum. An unknown name throws aogen::error listing the valid names; `subject`
 // is what the message names (pass the option or JSON path the user wrote, e.g. "--blur").

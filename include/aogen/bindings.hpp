@@ -4,8 +4,9 @@
 //
 // WHAT
 //   A pass reads and writes resources by role (resource_role): its uniform block, the depth
-//   buffer, the G-buffer normals, the noise tile, the previous pass's AO, its output image and
-//   — in diagnostic builds — its raw-value image. Which roles a pass family has, in which
+//   buffer, the G-buffer normals, the noise tile, the previous pass's AO, its output image,
+//   — in diagnostic builds — its raw-value image and — in the last pass of a -mbg variant —
+//   the G-buffer's albedo. Which roles a pass family has, in which
 //   order, is pass_roles(family): the AO pass, the filter passes (blur_x, blur_y,
 //   blur_box, blur_denoise, upsample) that read an AO image, and the prefilter that builds the
 //   depth MIP chain (depth_mips.hpp) the AO pass then reads. A role's binding numbers follow
@@ -24,15 +25,17 @@
 //     AO pass        0 uniforms  1 depth  2 normals   0 uniforms  1 depth  2 depth sampler
 //                    3 noise  4 output  5 raw          3 normals  4 noise  5 output  6 raw
 //                    6 depth_mips                      7 depth_mips  8 depth_mips sampler
+//                    7 gbuffer_albedo                  9 gbuffer_albedo
 //     filter passes  0 uniforms  1 depth  2 ao_input  0 uniforms  1 depth  2 depth sampler
 //                    3 output  4 raw                   3 ao_input  4 ao_input sampler
-//                                                      5 output  6 raw
+//                    5 gbuffer_albedo                  5 output  6 raw  7 gbuffer_albedo
 //     prefilter      0 uniforms  1 depth  2 output    0 uniforms  1 depth  2 depth sampler
 //                                                      3 output
 //
 //   A number belongs to its role whether or not a given shader declares it: a reconstructed-
 //   normal variant has no binding 2 (vulkan), a fragment pass no output image, a shipped
-//   pass no raw image — the others keep their numbers, so one layout serves every variant.
+//   pass no raw image, every pass but a -mbg chain's last no gbuffer_albedo — the others keep their
+//   numbers, so one layout serves every variant.
 //
 // USAGE
 //     for (aogen::resource_role r : aogen::pass_roles(aogen::pass_family::ao)) ...
@@ -59,8 +62,8 @@ inline constexpr std::array<enum_name<binding_model>, 2> binding_model_names{{
 }};
 static_assert(names::distinct(binding_model_names));
 
-enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw, depth_mips };
-inline constexpr std::array<enum_name<resource_role>, 8> resource_role_names{{
+enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw, depth_mips, gbuffer_albedo };
+inline constexpr std::array<enum_name<resource_role>, 9> resource_role_names{{
     {resource_role::uniforms, "uniforms"},
     {resource_role::depth, "depth"},
     {resource_role::normals, "normals"},
@@ -69,6 +72,7 @@ inline constexpr std::array<enum_name<resource_role>, 8> resource_role_names{{
     {resource_role::output, "output"},
     {resource_role::raw, "raw"},
     {resource_role::depth_mips, "depth_mips"},
+    {resource_role::gbuffer_albedo, "gbuffer_albedo"},
 }};
 static_assert(names::distinct(resource_role_names));
 inline const char* to_name(resource_role r) { return names::name_of(resource_role_names, r, "resource role"); }
@@ -88,20 +92,23 @@ inline pass_family family_of(pass_kind p)
 }
 
 // The roles of a family, in binding order. A role added later goes last, so that no binding
-// number of an existing role moves (depth_mips, the AO pass's MIP chain, came after raw).
+// number of an existing role moves (depth_mips, the AO pass's MIP chain, came after raw; the
+// gbuffer_albedo after both; not "albedo", the uniform member's name, since HLSL puts a
+// cbuffer's members and the textures in one scope). It is in both families: the last pass of a chain, which reads
+// it, may be the AO pass or any filter.
 inline std::vector<resource_role> pass_roles(pass_family f)
 {
     using r = resource_role;
-    if (f == pass_family::ao) return {r::uniforms, r::depth, r::normals, r::noise, r::output, r::raw, r::depth_mips};
+    if (f == pass_family::ao) return {r::uniforms, r::depth, r::normals, r::noise, r::output, r::raw, r::depth_mips, r::gbuffer_albedo};
     if (f == pass_family::prefilter) return {r::uniforms, r::depth, r::output};
-    return {r::uniforms, r::depth, r::ao_input, r::output, r::raw};
+    return {r::uniforms, r::depth, r::ao_input, r::output, r::raw, r::gbuffer_albedo};
 }
 
 // Is `role` a texture (sampled by the pass, as opposed to a buffer or a storage image)?
 inline bool is_texture(resource_role role)
 {
     return role == resource_role::depth || role == resource_role::normals || role == resource_role::noise ||
-           role == resource_role::ao_input || role == resource_role::depth_mips;
+           role == resource_role::ao_input || role == resource_role::depth_mips || role == resource_role::gbuffer_albedo;
 }
 
 // Does the pass gather from it (textureGather), so that WebGPU needs a sampler beside it?
@@ -147,6 +154,7 @@ inline const char* what_it_holds(resource_role r)
     case resource_role::output: return "the output: a storage image (compute passes only)";
     case resource_role::raw: return "raw values before the guard, r32f (codegen::options::diagnostics only)";
     case resource_role::depth_mips: return "the depth MIP chain's levels 1.. in one r32f atlas (the prefilter's output; variants with depth mips only)";
+    case resource_role::gbuffer_albedo: return "G-buffer albedo, full resolution, linear reflectance in .rgb (the last pass of -mbg variants only)";
     }
     return "";
 }

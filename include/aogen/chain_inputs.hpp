@@ -4,7 +4,7 @@
 // WHAT
 //   The data every runner of a chain uploads, with no API in it: aogen::vulkan's harness and
 //   aogen::gl's runner read the same bytes, so their outputs can be compared pixel for pixel.
-//     gbuffer         raw depth and normals as floats, row-major, top row first
+//     gbuffer         raw depth, normals and albedo as floats, row-major, top row first
 //     chain_settings  the run-time settings of every pass (params.hpp's ao_settings), the
 //                     camera and the frame index (temporal.hpp: 0, a still frame, unless set)
 //     inputs_for(v, settings, target_w, target_h)
@@ -35,7 +35,18 @@ struct gbuffer {
     int width = 0, height = 0;
     std::vector<float> depth;   // width × height raw depth values
     std::vector<float> normals; // width × height × 4 (xyz used); may be empty for reconstructed normals
+    // width × height × 4, linear reflectance in rgb (a used); read by -mbg variants only
+    // (common/core.glsl's ao_albedo), may be empty for every other
+    std::vector<float> albedo;
 };
+
+// `g` with every pixel's albedo `rho` (grey): the albedo G-buffer of a renderer with one
+// material -- a -mbg variant then writes what -mb writes with finalize_params::albedo = rho.
+inline gbuffer with_uniform_albedo(gbuffer g, float rho)
+{
+    g.albedo.assign(static_cast<size_t>(g.width < 0 ? 0 : g.width) * static_cast<size_t>(g.height < 0 ? 0 : g.height) * 4, rho);
+    return g;
+}
 
 // The bytes a chain's passes read besides the G-buffer.
 struct chain_inputs {

@@ -57,7 +57,7 @@ struct variant_matrix {
     std::vector<ssao_decisions> decisions{ssao_decisions::smooth};
     std::vector<bool> fp16{false};
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
-    std::vector<bool> multi_bounce{false};
+    std::vector<multi_bounce_mode> multi_bounce{multi_bounce_mode::off};
     std::vector<bool> bent_normals{false}; // on: GTAO and VBAO compute variants only (others skip it)
 };
 
@@ -106,7 +106,7 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (ssao_decisions dec : m.decisions)
     for (bool fp16 : m.fp16)
     for (upsample_mode up : m.upsample)
-    for (bool mb : m.multi_bounce)
+    for (multi_bounce_mode mb : m.multi_bounce)
     for (bool bn : m.bent_normals) {
         v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;

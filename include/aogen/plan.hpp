@@ -212,11 +212,12 @@ inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shad
     const pass_family family = family_of(pass);
     std::vector<resource> r;
     for (resource_role role : pass_roles(family)) {
-        const bool declared = role == resource_role::normals      ? v.normals != normal_source::reconstructed
-                              : role == resource_role::output     ? stage == shader_stage::compute
-                              : role == resource_role::raw        ? o.diagnostics
-                              : role == resource_role::depth_mips ? has_prefilter_pass(v)
-                                                                  : true;
+        const bool declared = role == resource_role::normals          ? v.normals != normal_source::reconstructed
+                              : role == resource_role::output         ? stage == shader_stage::compute
+                              : role == resource_role::raw            ? o.diagnostics
+                              : role == resource_role::depth_mips     ? has_prefilter_pass(v)
+                              : role == resource_role::gbuffer_albedo ? reads_albedo(v, pass)
+                                                                      : true;
         if (!declared) continue;
         const uint32_t binding = binding_of(family, role, o.model);
         const std::string name = aogen::to_name(role);

@@ -21,7 +21,8 @@
 //   (a half-resolution target left for the caller to upsample), `mip5` (a depth MIP chain of
 //   5 levels, read by far taps: depth_mips.hpp), `deint` (the AO pass dispatched as 4 x 4
 //   interleaved layers), `bn` (bent normals written beside the AO), `mb` (multi-bounce in
-//   the last pass's finalize step), `wg16x16` (workgroup size).
+//   the last pass's finalize step, one albedo) or `mbg` (the same, each pixel's albedo from
+//   the G-buffer), `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -104,9 +105,10 @@ struct variant {
     // read before, so the output is the same bit for bit. Workgroup sides a multiple of 4.
     bool deinterleaved = false;
     // Multi-bounce: the chain's last pass brightens the AO it writes by the inter-reflections
-    // of surfaces of albedo finalize_params::albedo (the GTAO paper's fit, common/core.glsl's
-    // ao_multi_bounce). Every technique. DESIGN.md default: off.
-    bool multi_bounce = false;
+    // of surfaces of albedo rho (the GTAO paper's fit, common/core.glsl's ao_multi_bounce):
+    // one rho for the image (finalize_params::albedo, -mb) or each pixel's from the albedo
+    // G-buffer (-mbg). Every technique. DESIGN.md default: off.
+    multi_bounce_mode multi_bounce = multi_bounce_mode::off;
     // Bent normals: every pass also writes the pixel's bent normal -- the cosine-weighted mean
     // of its unoccluded directions, in view space -- beside the AO, which needs a four-channel
     // output (AO in .r, the normal in .gba: common/core.glsl's ao_value). GTAO and VBAO,
@@ -151,6 +153,7 @@ inline void validate(const variant& v)
     names::require_listed(ssao_output_names, v.output, "output");
     names::require_listed(ssao_decisions_names, v.decisions, "decisions");
     names::require_listed(upsample_mode_names, v.upsample, "upsample");
+    names::require_listed(multi_bounce_mode_names, v.multi_bounce, "multi-bounce");
     require_in("workgroup x", v.workgroup_x, variant::workgroup_side_range);
     require_in("workgroup y", v.workgroup_y, variant::workgroup_side_range);
     if (v.workgroup_x * v.workgroup_y > variant::max_workgroup_invocations)
@@ -242,6 +245,20 @@ inline std::vector<pass_kind> passes(const variant& v)
     return p;
 }
 
+// Does `pass` of `v` add the multi-bounce light? The chain's last pass does, once, on what
+// the renderer reads -- never a pass whose output a later pass filters.
+inline bool applies_multi_bounce(const variant& v, pass_kind pass)
+{
+    return v.multi_bounce != multi_bounce_mode::off && pass == passes(v).back();
+}
+
+// Does `pass` of `v` read the albedo G-buffer (bindings.hpp's gbuffer_albedo role)? The pass
+// that applies a -mbg variant's multi-bounce.
+inline bool reads_albedo(const variant& v, pass_kind pass)
+{
+    return v.multi_bounce == multi_bounce_mode::gbuffer_albedo && applies_multi_bounce(v, pass);
+}
+
 struct define {
     std::string name;
     std::string value; // empty: a plain #define NAME
@@ -273,7 +290,7 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
     choice("PASS", names::name_of(pass_kind_names, pass, "pass"));
     if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
     if (pass == pass_kind::ao && v.deinterleaved) count("AO_DEINTERLEAVED_LAYERS", deinterleaved_layers);
-    if (v.multi_bounce && pass == passes(v).back()) d.push_back({"AO_MULTI_BOUNCE", ""}); // the finalize step of the last pass
+    if (applies_multi_bounce(v, pass)) d.push_back({"AO_MULTI_BOUNCE", ""}); // the finalize step of the last pass
     if (v.bent_normals && pass != pass_kind::prefilter) d.push_back({"AO_BENT_NORMALS", ""}); // every pass that reads or writes AO
     if (pass == pass_kind::ao) {
         choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
@@ -410,7 +427,8 @@ inline std::string name_of(const variant& input)
     if (v.depth_mips != d.depth_mips) name += "-mip" + std::to_string(v.depth_mips);
     if (v.deinterleaved) name += "-deint";
     if (v.bent_normals) name += "-bn";
-    if (v.multi_bounce) name += "-mb";
+    if (v.multi_bounce == multi_bounce_mode::uniform_albedo) name += "-mb";
+    if (v.multi_bounce == multi_bounce_mode::gbuffer_albedo) name += "-mbg";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -454,8 +472,12 @@ inline variant variant_from_name(const std::string& name)
     std::vector<std::string> seen;
     for (size_t i = 8; i < t.size(); ++i) {
         const std::string& x = t[i];
-        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x.rfind("mip", 0) == 0 ? "mip" : x;
-        if (std::find(seen.begin(), seen.end(), kind) != seen.end()) fail(subject, quote(x) + " appears twice", "valid: each extra once");
+        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x.rfind("mip", 0) == 0 ? "mip" : x == "mbg" ? "mb" : x;
+        if (std::find(seen.begin(), seen.end(), kind) != seen.end()) {
+            if (kind == "mb" && std::find(t.begin() + 8, t.begin() + i, x) == t.begin() + i)
+                fail(subject, quote(x) + " is a second multi-bounce extra", "valid: one of mb, mbg");
+            fail(subject, quote(x) + " appears twice", "valid: each extra once");
+        }
         seen.push_back(kind);
         if (x == "rawdepth") v.blur_depth = bilateral_depth::seed_raw;
         else if (x == "pc") v.point_cloud_fallback = true;
@@ -466,14 +488,15 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "nearest") v.upsample = upsample_mode::nearest;
         else if (x == "deint") v.deinterleaved = true;
         else if (x == "bn") v.bent_normals = true;
-        else if (x == "mb") v.multi_bounce = true;
+        else if (x == "mb") v.multi_bounce = multi_bounce_mode::uniform_albedo;
+        else if (x == "mbg") v.multi_bounce = multi_bounce_mode::gbuffer_albedo;
         else if (kind == "mip") {
             if ((v.depth_mips = detail::parse_count(x, 3)) < 0) fail(subject, quote(x) + " is not a depth MIP level count", "valid: mip2..mip5");
         } else if (kind == "wg") {
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, bn, mb, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, bn, mb, mbg, wg<X>x<Y>");
     }
     try {
         validate(v);

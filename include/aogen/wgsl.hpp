@@ -257,13 +257,15 @@ inline std::vector<std::vector<uint32_t>> to_spirv(const std::vector<wgsl_job>& 
 
 // One pass of a chain for run_on_dawn: its WGSL (a compute shader; or a fragment shader and
 // the vertex shader it is drawn with), its output's size, the pixels one invocation writes
-// (aogen::pixels_per_invocation) and its uniform bytes.
+// (aogen::pixels_per_invocation), its uniform bytes and, for the last pass of a -mbg
+// variant, the binding it reads the albedo G-buffer at.
 struct dawn_pass {
     std::string wgsl;
     std::string vertex_wgsl; // empty for a compute pass
     int width = 0, height = 0;
     int pixels_per_invocation = 1;
     std::vector<uint8_t> uniforms;
+    int albedo_binding = -1; // -1: the pass reads no albedo
 };
 
 // The result of run_on_dawn: the last pass's output (.r, one byte a pixel, row-major), its
@@ -278,16 +280,19 @@ struct dawn_result {
 // Executes a chain's WGSL on a real WebGPU implementation: Dawn (npm webgpu) on its
 // OpenGL ES backend, Tint's GLSL ES on Mesa's llvmpipe (EGL surfaceless) — Dawn refuses
 // lavapipe as a Vulkan device. Inputs as aogen::gbuffer and chain_inputs hold them: depth
-// (W×H floats), normals (W×H×4 floats, or none), the noise tile (N×N RGBA32F bytes). Bindings
-// are the webgpu model's (bindings.hpp). An aogen::error with Dawn's message when it fails.
-inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& depth, const std::vector<float>& normals, int noise_size,
-                               const std::vector<uint8_t>& noise, const std::vector<dawn_pass>& passes, const tools& t = find_tools())
+// (W×H floats), normals and albedo (W×H×4 floats each, or none), the noise tile (N×N RGBA32F
+// bytes). Bindings are the webgpu model's (bindings.hpp). An aogen::error with Dawn's message
+// when it fails.
+inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& depth, const std::vector<float>& normals,
+                               const std::vector<float>& albedo, int noise_size, const std::vector<uint8_t>& noise,
+                               const std::vector<dawn_pass>& passes, const tools& t = find_tools())
 {
     detail::scratch s;
     const auto floats = [](const std::vector<float>& f) { return std::string(reinterpret_cast<const char*>(f.data()), f.size() * sizeof(float)); };
     std::string chain = "gbuffer " + std::to_string(width) + " " + std::to_string(height) + "\nnoise " + std::to_string(noise_size) + "\n";
     detail::write_all(s.file("depth.f32"), floats(depth));
     if (!normals.empty()) detail::write_all(s.file("normals.f32"), floats(normals));
+    if (!albedo.empty()) detail::write_all(s.file("albedo.f32"), floats(albedo));
     detail::write_all(s.file("noise.f32"), std::string(noise.begin(), noise.end()));
     for (size_t i = 0; i < passes.size(); ++i) {
         const std::string file = "pass" + std::to_string(i) + ".wgsl";
@@ -297,6 +302,10 @@ inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& 
         detail::write_all(s.file("uniforms" + std::to_string(i) + ".bin"), std::string(passes[i].uniforms.begin(), passes[i].uniforms.end()));
         chain += "pass " + file + " " + std::to_string(passes[i].width) + " " + std::to_string(passes[i].height) + " " +
                  std::to_string(passes[i].pixels_per_invocation) + (vertex.empty() ? "" : " " + vertex) + "\n";
+        if (passes[i].albedo_binding >= 0) {
+            if (albedo.empty()) fail("wgsl on dawn", "pass " + std::to_string(i) + " reads the albedo G-buffer, and none was given", "valid: W×H×4 albedo floats");
+            chain += "albedo " + std::to_string(passes[i].albedo_binding) + "\n";
+        }
     }
     detail::write_all(s.file("chain.txt"), chain);
     detail::run(t, "run", s.path());

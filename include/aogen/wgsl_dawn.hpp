@@ -12,6 +12,7 @@
 // fragment passes draw the fullscreen triangle into r8unorm targets.
 #pragma once
 
+#include "bindings.hpp"
 #include "chain_inputs.hpp"
 #include "wgsl.hpp"
 
@@ -32,10 +33,11 @@ inline dawn_result run_variant_on_dawn(const variant& v, const std::vector<std::
     for (size_t i = 0; i < ps.size(); ++i) {
         const bool screen = ps[i] == pass_kind::upsample;
         const std::string vertex = per_pass == 2 ? texts[2 * i] : std::string();
+        const int albedo = reads_albedo(v, ps[i]) ? int(binding_of(family_of(ps[i]), resource_role::gbuffer_albedo, binding_model::webgpu)) : -1;
         dawn.push_back({texts[per_pass * i + per_pass - 1], vertex, screen ? g.width : tw, screen ? g.height : th, pixels_per_invocation(ps[i], v.stage),
-                        in.uniforms[i]});
+                        in.uniforms[i], albedo});
     }
-    return run_on_dawn(g.width, g.height, g.depth, g.normals, in.noise_size, in.noise, dawn);
+    return run_on_dawn(g.width, g.height, g.depth, g.normals, g.albedo, in.noise_size, in.noise, dawn);
 }
 
 } // namespace aogen::wgsl

@@ -188,6 +188,30 @@ float ao_multi_bounce(float v, float albedo)
     float c = 2.7552 * albedo + 0.6903;
     return clamp(max(v, ((v * a + b) * v + c) * v), 0.0, 1.0);
 }
+
+#if defined(AO_BINDING_GBUFFER_ALBEDO)
+// -mbg: each pixel's albedo from the renderer's G-buffer (u_gbuffer_albedo, bindings.hpp's
+// gbuffer_albedo role): linear reflectance in .rgb at the screen's resolution (an _SRGB view
+// decodes for us), read at the screen pixel the output pixel stands for. One channel of AO holds
+// one rho: the albedo's luminance (Rec. 709 weights). The cubic is linear in rho, so its
+// value there is the luminance of the three channels' cubics; only the max() tells them
+// apart, where a dark channel's cubic falls under v -- exact for grey, at most 0.035 (9/255,
+// a saturated red of 0.85 at v = 0.32) for any colour. An engine that wants coloured
+// multi-bounce applies ao_multi_bounce per channel to a plain variant's AO. A texel that is
+// not finite bounces no light (rho = 0); one outside [0, 1] (a float G-buffer's) is clamped.
+ivec2 ao_output_screen_pixel(ivec2 pixel); // common/depth.glsl
+float ao_albedo(ivec2 pixel)
+{
+    float rho = dot(texelFetch(u_gbuffer_albedo, ao_output_screen_pixel(pixel), 0).rgb, vec3(0.2126, 0.7152, 0.0722));
+    return ao_is_finite(rho) ? clamp(rho, 0.0, 1.0) : 0.0;
+}
+#else
+// -mb: one albedo for the image, finalize_params::albedo (checked on the host to be in [0, 1]).
+float ao_albedo(ivec2 pixel)
+{
+    return u.albedo;
+}
+#endif
 #endif
 
 // An AO value made safe to write or to read: finite and in [0, 1]. Anything else (a NaN from
@@ -198,14 +222,15 @@ float ao_finalize(float ao)
     return ao_is_finite(ao) ? clamp(ao, 0.0, 1.0) : 1.0;
 }
 
-// What a pass writes (the entry points): ao_finalize's value, and in the chain's last pass
-// of a -mb variant (AO_MULTI_BOUNCE) the multi-bounce light for u.albedo (finalize_params)
-// on top -- once, on what the renderer reads, never on what a later pass would filter.
-float ao_output(float ao)
+// What a pass writes at output pixel `pixel` (the entry points): ao_finalize's value, and in
+// the chain's last pass of a -mb or -mbg variant (AO_MULTI_BOUNCE) the multi-bounce light for
+// the albedo there (ao_albedo) on top -- once, on what the renderer reads, never on what a
+// later pass would filter.
+float ao_output(float ao, ivec2 pixel)
 {
     float v = ao_finalize(ao);
 #if defined(AO_MULTI_BOUNCE)
-    v = ao_multi_bounce(v, u.albedo);
+    v = ao_multi_bounce(v, ao_albedo(pixel));
 #endif
     return v;
 }
@@ -241,7 +266,7 @@ vec3 ao_encode_normal(vec3 n)
     if (!(length_squared > 1e-12 && length_squared < 1e30)) return vec3(128.0 / 255.0); // NaN fails too
     return clamp(n * inversesqrt(length_squared) * (127.0 / 255.0) + (128.0 / 255.0), 0.0, 1.0);
 }
-vec4 ao_output_texel(ao_value v) { return vec4(ao_output(v.x), ao_encode_normal(v.yzw)); }
+vec4 ao_output_texel(ao_value v, ivec2 pixel) { return vec4(ao_output(v.x, pixel), ao_encode_normal(v.yzw)); }
 ao_value4 ao_quad_of(vec4 ao) { return mat4(vec4(ao.x, 0.0, 0.0, 0.0), vec4(ao.y, 0.0, 0.0, 0.0), vec4(ao.z, 0.0, 0.0, 0.0), vec4(ao.w, 0.0, 0.0, 0.0)); }
 #if defined(AO_BINDING_AO_INPUT)
 // What a filter pass reads of the pass before at q: its AO made safe, its normal decoded.
@@ -257,7 +282,7 @@ ao_value ao_read_input(ivec2 q)
 ao_value ao_make_value(float ao, vec3 bent_normal) { return ao; }
 float ao_value_ao(ao_value v) { return v; }
 vec3 ao_value_bent(ao_value v) { return vec3(0.0); }
-vec4 ao_output_texel(ao_value v) { return vec4(ao_output(v), 0.0, 0.0, 1.0); }
+vec4 ao_output_texel(ao_value v, ivec2 pixel) { return vec4(ao_output(v, pixel), 0.0, 0.0, 1.0); }
 ao_value4 ao_quad_of(vec4 ao) { return ao; }
 #if defined(AO_BINDING_AO_INPUT)
 ao_value ao_read_input(ivec2 q) { return ao_finalize(texelFetch(u_ao_input, q, 0).r); }

@@ -35,6 +35,17 @@ ivec2 ao_full_pixel(ivec2 p)
     return clamp(p, ivec2(0), ao_depth_size() - 1);
 }
 
+// The screen pixel under output pixel `p` of this pass: the upsample writes the screen
+// itself; every other pass writes the AO target, whose pixel p stands for ao_full_pixel(p).
+ivec2 ao_output_screen_pixel(ivec2 p)
+{
+#if defined(AO_PASS_UPSAMPLE)
+    return p;
+#else
+    return ao_full_pixel(p);
+#endif
+}
+
 // The raw depth-buffer value at a full-resolution pixel (inside the screen).
 float ao_load_depth(ivec2 full_pixel)
 {

@@ -640,6 +640,11 @@ group_generate() {
   new_case spec-bent-normals-neither-on-nor-off
   printf '{"matrices": [{"technique": ["gtao"], "bent_normals": ["yes"]}]}' >"$c/spec.json"
   expect_fail -m "$(field spec.json 'matrices[0].bent_normals[0]')" -m 'on' -m 'off' -- "${gen[@]}" --out out --variants spec.json
+  new_case two-multi-bounce-extras # -mb and -mbg are one axis: refused by name with what is valid
+  expect_fail -m "'mbg' is a second multi-bounce extra" -m 'valid: one of mb, mbg' -- "${gen[@]}" --out out gtao-2x3-half-bilateral-gbufworld-std-persp-cs-mb-mbg
+  new_case spec-multi-bounce-unknown
+  printf '{"matrices": [{"technique": ["gtao"], "multi_bounce": ["texture"]}]}' >"$c/spec.json"
+  expect_fail -m "$(field spec.json 'matrices[0].multi_bounce[0]')" -m 'off, on, gbuffer' -- "${gen[@]}" --out out --variants spec.json
   new_case spec-samples-out-of-range
   printf '{"matrices": [{"samples": [0]}]}' >"$c/spec.json"
   expect_fail -m "$(field spec.json 'matrices[0].samples[0]')" -m '1\.\.256' -- "${gen[@]}" --out out --variants spec.json

@@ -129,6 +129,8 @@ list)
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004-step" "$work/variants.txt"
   check "VBAO's High preset is in it, at half and full resolution" grep -qx "vbao-3x3-full-bilateral-gbufworld-std-persp-cs" "$work/variants.txt"
   check "axes list vbao" grep -q "ssao | gtao | vbao" "$work/axes.txt"
+  check "axes list both multi-bounce extras" grep -q "off, on, gbuffer .*-mb | -mbg$" "$work/axes.txt"
+  check "axes list bent normals" grep -q "^bent normals .*-bn$" "$work/axes.txt"
   ;;
 generate)
   v1=ssao-s16-half-bilateral-gbufworld-std-persp-cs
@@ -207,15 +209,15 @@ assert why['world-to-view normal rotation'] == 'the G-buffer normals are already
 import json; names = [v['name'] for v in json.load(open('$work/spec/manifest.json'))['variants']]
 assert len(names) == 5 and 'ssao-s8-half-box-gbufworld-std-persp-cs' in names, names
 "
-  # multi_bounce: a spec key for the -mb extra; its values are on and off.
-  printf '{"matrices": [{"technique": ["gtao"], "blur": ["denoise"], "multi_bounce": ["off", "on"]}]}' >"$in/mb_spec.json"
+  # multi_bounce: a spec key for the -mb and -mbg extras; its values are off, on and gbuffer.
+  printf '{"matrices": [{"technique": ["gtao"], "blur": ["denoise"], "multi_bounce": ["off", "on", "gbuffer"]}]}' >"$in/mb_spec.json"
   "$aogen" generate --quiet --out "$work/mb" --targets spv --variants "$in/mb_spec.json"
   check "a spec's multi_bounce makes the -mb twin" python3 -c "
 import json; names = [v['name'] for v in json.load(open('$work/mb/manifest.json'))['variants']]
-assert names == ['gtao-2x3-half-denoise-gbufworld-std-persp-cs', 'gtao-2x3-half-denoise-gbufworld-std-persp-cs-mb'], names
+assert names == ['gtao-2x3-half-denoise-gbufworld-std-persp-cs', 'gtao-2x3-half-denoise-gbufworld-std-persp-cs-mb', 'gtao-2x3-half-denoise-gbufworld-std-persp-cs-mbg'], names
 "
   printf '{"matrices": [{"multi_bounce": ["yes"]}]}' >"$in/bad_mb_spec.json"
-  expect_error "multi_bounce neither on nor off" "matrices\[0\].multi_bounce\[0\].*on.*off" generate --variants "$in/bad_mb_spec.json" --out gen
+  expect_error "multi_bounce neither off, on nor gbuffer" "matrices\[0\].multi_bounce\[0\].*off.*on.*gbuffer" generate --variants "$in/bad_mb_spec.json" --out gen
   # bent_normals: a spec key for the -bn extra; GTAO's and VBAO's compute variants take it, the others skip it.
   printf '{"matrices": [{"technique": ["gtao", "ssao", "vbao"], "blur": ["denoise"], "stage": ["compute", "fragment"], "bent_normals": ["on"]}]}' >"$in/bn_spec.json"
   "$aogen" generate --quiet --out "$work/bn" --targets spv --variants "$in/bn_spec.json"

@@ -73,7 +73,7 @@ void compare_on_scene(vulkan::context& vk, gl::context& gl, const variant& v, co
     go.use_scene_normals = false; // as aogen_report/run.hpp renders it
     go.face_camera = false;
     go.normals = v.normals == normal_source::gbuffer_view ? scenes::normal_space::view : scenes::normal_space::world;
-    const vulkan::gbuffer ray_cast = scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(scene, v), *tracer, go));
+    const vulkan::gbuffer ray_cast = with_test_albedo(scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(scene, v), *tracer, go)));
     compare_one(vk, gl, v, target, o, ray_cast, aogen_report::default_settings(v, scene));
 }
 

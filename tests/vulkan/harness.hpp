@@ -36,7 +36,8 @@ using namespace aogen;
 // and three with the upsample, the denoise and VBAO, drawn as fullscreen triangles. Last, SAO
 // in each stage. Two carry multi-bounce (-mb), in an AO pass and in a fragment blur; two bent
 // normals (-bn), through the denoise and upsample and through the bilateral blur, whose
-// rgba8 texels' .gba the tests compare too.
+// rgba8 texels' .gba the tests compare too; three read the albedo G-buffer (-mbg) in the
+// upsample, in a half-resolution compute AO pass and in a fragment box blur.
 inline const char* const emitted_target_variants[] = {
     "ssao-s16-half-bilateral-gbufworld-std-persp-cs",
     "ssao-s8-full-box-recon-std-persp-cs",
@@ -58,7 +59,10 @@ inline const char* const emitted_target_variants[] = {
     "sao-s16-half-denoise-gbufworld-std-persp-cs",
     "sao-s8-full-noblur-recon-std-persp-fs",
     "gtao-2x2-half-denoise-gbufworld-std-persp-cs-bn",
-    "gtao-3x2-full-bilateral-recon-std-persp-cs-bn-mb"};
+    "gtao-3x2-full-bilateral-recon-std-persp-cs-bn-mb",
+    "ssao-s16-half-bilateral-gbufworld-std-persp-cs-mbg",
+    "vbao-2x2-half-noblur-gbufworld-std-persp-cs-nearest-mbg",
+    "gtao-2x3-half-box-gbufworld-std-persp-fs-nearest-mbg"};
 
 // One validated context for the whole run (lavapipe's start-up is not free). Without a
 // device, or without the validation layer, each test fails, or, with
@@ -94,10 +98,28 @@ inline vulkan::chain chain_under_test(vulkan::context& ctx, const variant& v, vu
 
 inline size_t pixel(int w, int x, int y) { return static_cast<size_t>(y) * w + x; }
 
-// A G-buffer of w × h cleared to background: standard depth 1, zero normals.
+// Channel c of the test albedo at pixel (x, y): tenths from 0 to 1 that differ between
+// neighbouring pixels and between channels, so that a -mbg pass reading its albedo at
+// another pixel, or one channel for the luminance, writes other values.
+inline float test_albedo(int x, int y, int c)
+{
+    return float((7 * x + 13 * y + 5 * c) % 11) / 10.0f;
+}
+
+// `g` with the test albedo (test_albedo) in its albedo G-buffer.
+inline vulkan::gbuffer with_test_albedo(vulkan::gbuffer g)
+{
+    g.albedo.assign(static_cast<size_t>(g.width) * g.height * 4, 1.0f);
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x)
+            for (int c = 0; c < 3; ++c) g.albedo[(static_cast<size_t>(y) * g.width + x) * 4 + c] = test_albedo(x, y, c);
+    return g;
+}
+
+// A G-buffer of w × h cleared to background: standard depth 1, zero normals, the test albedo.
 inline vulkan::gbuffer cleared(int w, int h)
 {
-    return {w, h, std::vector<float>(static_cast<size_t>(w) * h, 1.0f), std::vector<float>(static_cast<size_t>(w) * h * 4, 0.0f)};
+    return with_test_albedo({w, h, std::vector<float>(static_cast<size_t>(w) * h, 1.0f), std::vector<float>(static_cast<size_t>(w) * h * 4, 0.0f)});
 }
 
 // The depth-buffer value of view-space point p: clip z / clip w.

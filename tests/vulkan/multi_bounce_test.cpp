@@ -11,6 +11,10 @@
 // is last — the AO pass, a blur, the upsample; compute or fragment — and for albedos 0 to 1.
 // Background stays exactly 1. The check can fail: the fit with the albedo read as 1 - rho
 // is outside its bounds.
+//   -mbg reads each pixel's albedo from the G-buffer instead: the same bounds hold with the
+// albedo's luminance at the screen pixel each output pixel stands for (the harness's test
+// albedo changes from pixel to pixel and channel to channel, so another pixel or one channel
+// is caught); a grey G-buffer of rho gives -mb's output at rho.
 #include "harness.hpp"
 
 using namespace aogen;
@@ -25,20 +29,42 @@ double paper_fit(double v, double rho)
     return std::clamp(std::max(v, ((v * a + b) * v + c) * v), 0.0, 1.0);
 }
 
-// How many pixels of `with_mb` lie outside the fit of `twin` at albedo `rho`.
-size_t outside_the_fit(const std::vector<float>& twin, const std::vector<float>& with_mb, double rho, double* worst = nullptr)
+// How many pixels of `with_mb` lie outside the fit of `twin` at each pixel's albedo rho[i].
+size_t outside_the_fit(const std::vector<float>& twin, const std::vector<float>& with_mb, const std::vector<double>& rho, double* worst = nullptr)
 {
     const double step = 1.0 / 255.0;
     size_t outside = 0;
     for (size_t i = 0; i < twin.size(); ++i) {
-        const double v = twin[i], expected = paper_fit(v, rho);
-        const double input_slack = std::max(std::fabs(paper_fit(std::min(v + step, 1.0), rho) - expected),
-                                            std::fabs(paper_fit(std::max(v - step, 0.0), rho) - expected));
+        const double v = twin[i], expected = paper_fit(v, rho[i]);
+        const double input_slack = std::max(std::fabs(paper_fit(std::min(v + step, 1.0), rho[i]) - expected),
+                                            std::fabs(paper_fit(std::max(v - step, 0.0), rho[i]) - expected));
         const double off = std::fabs(with_mb[i] - expected) - (step + input_slack + 1e-6);
         if (worst) *worst = std::max(*worst, off);
         outside += off > 0;
     }
     return outside;
+}
+
+// The same at one albedo for every pixel.
+size_t outside_the_fit(const std::vector<float>& twin, const std::vector<float>& with_mb, double rho, double* worst = nullptr)
+{
+    return outside_the_fit(twin, with_mb, std::vector<double>(twin.size(), rho), worst);
+}
+
+// The albedo a -mbg chain of `v` must apply at each of its w × h output pixels: the
+// luminance (Rec. 709: 0.2126 R + 0.7152 G + 0.0722 B) of the G-buffer's albedo at the screen
+// pixel the output pixel stands for -- itself, or at half resolution without the upsample
+// (output_scale 2) the pixel 2p, clamped to the screen.
+std::vector<double> albedo_luminance_at_outputs(const variant& v, const vulkan::gbuffer& g, int w, int h)
+{
+    const int scale = output_scale(v);
+    std::vector<double> rho;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = static_cast<size_t>(std::min(scale * y, g.height - 1)) * g.width + std::min(scale * x, g.width - 1);
+            rho.push_back(0.2126 * g.albedo[4 * i] + 0.7152 * g.albedo[4 * i + 1] + 0.0722 * g.albedo[4 * i + 2]);
+        }
+    return rho;
 }
 
 } // namespace
@@ -57,7 +83,7 @@ TEST_CASE("vulkan: a -mb variant's last pass writes the paper's multi-bounce fit
                              "sao-s16-full-bilateral-gbufworld-std-persp-cs"}) {       // the bilateral's second pass
         const variant twin = variant_from_name(name);
         variant with_mb = twin;
-        with_mb.multi_bounce = true;
+        with_mb.multi_bounce = multi_bounce_mode::uniform_albedo;
         const vulkan::chain twin_chain = chain_under_test(*ctx, twin), mb_chain = chain_under_test(*ctx, with_mb);
         vulkan::chain_settings s = settings_for(proj);
         const std::vector<float> v = twin_chain.run(g, s).ao;
@@ -105,4 +131,70 @@ TEST_CASE("vulkan: an albedo outside 0 to 1 is refused by name before any pass r
         s.finalize.albedo = rho;
         CHECK_THROWS_WITH(c.run(g, s), Catch::Contains("finalize.albedo") && Catch::Contains("valid: 0..1"));
     }
+}
+
+TEST_CASE("vulkan: a -mbg variant's last pass writes the fit at each pixel's albedo from the G-buffer")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    constexpr int W = 96, H = 64;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gbuffer g = crease(W, H, 0.6f, proj); // with the harness's test albedo
+    REQUIRE(g.albedo.size() == size_t(W) * H * 4);
+    const vulkan::chain_settings s = settings_for(proj);
+    for (const char* name : {"gtao-2x3-full-noblur-gbufworld-std-persp-cs",               // last: the AO pass
+                             "ssao-s16-half-bilateral-gbufworld-std-persp-cs",            // the upsample (screen pixels)
+                             "vbao-2x2-half-noblur-gbufworld-std-persp-cs-nearest",       // a half-resolution AO pass: pixel 2p
+                             "gtao-2x2-half-denoise-gbufworld-std-persp-cs-nearest",      // the denoise at half resolution
+                             "gtao-2x3-half-box-gbufworld-std-persp-fs-nearest"}) {       // the box blur, fragment, half resolution
+        const variant twin = variant_from_name(name);
+        variant with_mbg = twin, with_mb = twin;
+        with_mbg.multi_bounce = multi_bounce_mode::gbuffer_albedo;
+        with_mb.multi_bounce = multi_bounce_mode::uniform_albedo;
+        INFO(to_name(with_mbg));
+        const vulkan::chain_result v = chain_under_test(*ctx, twin).run(g, s);
+        const vulkan::chain mbg_chain = chain_under_test(*ctx, with_mbg);
+        const vulkan::chain_result out = mbg_chain.run(g, s);
+        REQUIRE(out.ao.size() == v.ao.size());
+        size_t occluded = 0;
+        for (float x : v.ao) occluded += x < 0.9f;
+        REQUIRE(occluded > v.ao.size() / 40);
+        const std::vector<double> rho = albedo_luminance_at_outputs(twin, g, v.width, v.height);
+        double worst = -1;
+        CHECK(outside_the_fit(v.ao, out.ao, rho, &worst) == 0);
+        INFO("farthest outside its bound by " << worst * 255 << "/255");
+        CHECK(worst <= 0);
+        // The bounds can fail: the albedo of the output pixel's own coordinates (not its screen
+        // pixel's) or the red channel alone lie outside them on the occluded pixels.
+        std::vector<double> red(rho.size());
+        for (size_t i = 0; i < rho.size(); ++i) red[i] = g.albedo[4 * ((i / v.width) * output_scale(twin) * W + (i % v.width) * output_scale(twin))];
+        std::vector<float> red_fit(v.ao.size());
+        for (size_t i = 0; i < v.ao.size(); ++i) red_fit[i] = float(paper_fit(v.ao[i], red[i]));
+        CHECK(outside_the_fit(v.ao, red_fit, rho) > occluded / 4);
+        // A grey G-buffer of rho is -mb at rho, within the step the float luminance may round.
+        for (float grey : {0.3f, 0.9f}) {
+            vulkan::chain_settings at = s;
+            at.finalize.albedo = grey;
+            const std::vector<float> mb = chain_under_test(*ctx, with_mb).run(g, at).ao;
+            const std::vector<float> mbg = mbg_chain.run(with_uniform_albedo(g, grey), s).ao;
+            size_t identical = 0, farther = 0;
+            for (size_t i = 0; i < mb.size(); ++i) identical += mb[i] == mbg[i], farther += std::fabs(mb[i] - mbg[i]) > 1.5f / 255.0f;
+            CHECK(farther == 0);
+            CHECK(identical >= mb.size() * 99 / 100);
+        }
+    }
+    require_clean(*ctx);
+}
+
+TEST_CASE("vulkan: a -mbg chain bound to a G-buffer without albedo is refused by name")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const mat4 proj = perspective(0.6f, 1.5f, 0.1f, 100.0f);
+    vulkan::gbuffer g = crease(48, 32, 0.6f, proj);
+    g.albedo.clear();
+    const vulkan::chain c = chain_under_test(*ctx, variant_from_name("gtao-2x3-full-noblur-gbufworld-std-persp-cs-mbg"));
+    CHECK_THROWS_WITH(c.run(g, settings_for(proj)), Catch::Contains("reads the albedo G-buffer (-mbg), and the G-buffer has none"));
+    g.albedo.assign(7, 0.5f);
+    CHECK_THROWS_WITH(c.run(g, settings_for(proj)), Catch::Contains("albedo of 7 values (valid: width × height × 4, or none)"));
 }

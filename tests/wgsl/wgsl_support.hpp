@@ -34,7 +34,7 @@ struct ray_cast_crease {
         go.use_scene_normals = false;
         go.face_camera = false;
         go.normals = v.normals == normal_source::gbuffer_view ? scenes::normal_space::view : scenes::normal_space::world;
-        return scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(scene, v), *tracer, go));
+        return with_test_albedo(scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(aogen_report::for_variant(scene, v), *tracer, go)));
     }
 };
 

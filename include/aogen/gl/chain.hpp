@@ -206,7 +206,7 @@ inline void bind_by_name(GLuint p, const std::vector<codegen::resource>& resourc
 
 // The G-buffer, noise and samplers every pass reads, uploaded once.
 struct chain_textures {
-    GLuint depth = 0, normals = 0, noise = 0, clamp = 0, repeat = 0;
+    GLuint depth = 0, normals = 0, albedo = 0, noise = 0, clamp = 0, repeat = 0;
 };
 
 // Binds `resources` of pass `name` at their bindings: its uniform block (bytes `uniforms`),
@@ -226,11 +226,13 @@ inline void bind_resources(objects& gl, const std::vector<codegen::resource>& re
             switch (r.role) {
             case resource_role::depth: texture = t.depth; break;
             case resource_role::normals: texture = t.normals; break;
+            case resource_role::gbuffer_albedo: texture = t.albedo; break;
             case resource_role::noise: texture = t.noise, sampler = t.repeat; break;
             case resource_role::ao_input: texture = previous; break;
             default: break;
             }
-            if (!texture) fail("gl " + name, "reads '" + r.name + "', which this run has not", "valid: depth, normals (a G-buffer with them), noise, ao_input");
+            if (!texture)
+                fail("gl " + name, "reads '" + r.name + "', which this run has not", "valid: depth, normals and albedo (a G-buffer with them), noise, ao_input");
             glActiveTexture(GL_TEXTURE0 + unit);
             glBindTexture(GL_TEXTURE_2D, texture);
             glBindSampler(unit, sampler);
@@ -273,14 +275,16 @@ inline chain_result run(const context& ctx, const variant& v, const std::vector<
              "valid: " + std::to_string(kinds.size() * stages.size()) + " texts (" + std::to_string(stages.size()) + " per pass) and " +
                  std::to_string(kinds.size()) + " uniform blocks");
     const size_t pixels = size_t(g.width) * size_t(g.height);
-    if (g.width < 1 || g.height < 1 || g.depth.size() != pixels || (!g.normals.empty() && g.normals.size() != 4 * pixels))
+    if (g.width < 1 || g.height < 1 || g.depth.size() != pixels || (!g.normals.empty() && g.normals.size() != 4 * pixels) ||
+        (!g.albedo.empty() && g.albedo.size() != 4 * pixels))
         fail("gl chain", "G-buffer of " + std::to_string(g.width) + "x" + std::to_string(g.height) + " with " + std::to_string(g.depth.size()) + " depths",
-             "valid: width × height depths and none or 4 × that normals");
+             "valid: width × height depths and none or 4 × that normals and albedo values");
 
     detail::objects gl;
     detail::chain_textures t;
     t.depth = gl.texture(g.width, g.height, GL_R32F, GL_RED, GL_FLOAT, g.depth.data());
     t.normals = g.normals.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.normals.data());
+    t.albedo = g.albedo.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.albedo.data());
     t.noise = gl.texture(in.noise_size, in.noise_size, GL_RGBA32F, GL_RGBA, GL_FLOAT, in.noise.data());
     t.clamp = gl.sampler(GL_CLAMP_TO_EDGE), t.repeat = gl.sampler(GL_REPEAT);
     const auto [tw, th] = target_size(v, g.width, g.height);

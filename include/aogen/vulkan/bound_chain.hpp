@@ -370,6 +370,11 @@ private:
                 throw error("vulkan bound chain: " + passes_.name() + " reads normals, and the G-buffer has none (valid: a G-buffer with "
                             "width × height × 4 normals, or a reconstructed-normal variant)");
             return {clamp_, g.normals().view, read};
+        case resource_role::gbuffer_albedo:
+            if (!g.has_albedo())
+                throw error("vulkan bound chain: " + passes_.name() + " reads the albedo G-buffer (-mbg), and the G-buffer has none (valid: a "
+                            "G-buffer with width × height × 4 albedo values, e.g. with_uniform_albedo, or -mb's one albedo)");
+            return {clamp_, g.albedo().view, read};
         case resource_role::noise: return {repeat_, noise_.view, read};
         case resource_role::ao_input:
             if (i > 0) return {clamp_, outputs_[i - 1].view, read};
@@ -380,7 +385,7 @@ private:
             break;
         default: break;
         }
-        throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input, depth_mips after a prefilter)");
+        throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input, depth_mips after a prefilter, albedo)");
     }
 
     // A storage image of pass `i`: its output, or its raw values.

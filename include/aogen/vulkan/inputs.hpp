@@ -2,12 +2,12 @@
 // into device-local images) and the per-chain inputs (uniform bytes per pass, noise tile).
 //
 // WHAT
-//   gbuffer       the G-buffer on the host: raw depth values and RGBA32F normals, row-major,
-//                 top row first.
+//   gbuffer       the G-buffer on the host: raw depth values, RGBA32F normals and albedo,
+//                 row-major, top row first.
 //   gpu_gbuffer   that G-buffer uploaded into device-local images, once: depth as an
 //                 R32_SFLOAT colour image (any float, NaN included) or a D32_SFLOAT depth
 //                 image sampled through its depth aspect (values in [0, 1] only); normals
-//                 as R32G32B32A32_SFLOAT when the host G-buffer has them. Many bound chains
+//                 and albedo as R32G32B32A32_SFLOAT when the host G-buffer has them. Many bound chains
 //                 (bound_chain.hpp) may read one gpu_gbuffer: the report uploads each
 //                 scene's G-buffer once for every variant it runs.
 //   chain_inputs  the bytes a chain's passes read besides the G-buffer: each pass's uniform
@@ -69,6 +69,10 @@ public:
             normals_ = scope_.upload(cb, g.width, g.height, VK_FORMAT_R32G32B32A32_SFLOAT, g.normals.data(), g.normals.size() * 4, readers, staging);
             has_normals_ = true;
         }
+        if (!g.albedo.empty()) {
+            albedo_ = scope_.upload(cb, g.width, g.height, VK_FORMAT_R32G32B32A32_SFLOAT, g.albedo.data(), g.albedo.size() * 4, readers, staging);
+            has_albedo_ = true;
+        }
         staging.submit(cb);
     }
 
@@ -78,6 +82,8 @@ public:
     const image& depth() const { return depth_; }
     bool has_normals() const { return has_normals_; }
     const image& normals() const { return normals_; }
+    bool has_albedo() const { return has_albedo_; }
+    const image& albedo() const { return albedo_; }
 
 private:
     static void check_host(const gbuffer& g, depth_format format)
@@ -89,6 +95,8 @@ private:
                         std::to_string(H) + " (valid: width × height values, both >= 1)");
         if (!g.normals.empty() && g.normals.size() != pixels * 4)
             throw error("vulkan gbuffer: normals of " + std::to_string(g.normals.size()) + " values (valid: width × height × 4, or none)");
+        if (!g.albedo.empty() && g.albedo.size() != pixels * 4)
+            throw error("vulkan gbuffer: albedo of " + std::to_string(g.albedo.size()) + " values (valid: width × height × 4, or none)");
         names::require_listed(depth_format_names, format, "vulkan gbuffer depth format");
         // A copy into D32_SFLOAT of a value outside [0, 1] is undefined in Vulkan; say so instead.
         if (format == depth_format::d32_sfloat)
@@ -101,8 +109,8 @@ private:
     resource_scope scope_;
     int width_, height_;
     depth_format format_;
-    image depth_, normals_;
-    bool has_normals_ = false;
+    image depth_, normals_, albedo_;
+    bool has_normals_ = false, has_albedo_ = false;
 };
 
 } // namespace aogen::vulkan

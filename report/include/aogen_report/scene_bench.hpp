@@ -70,7 +70,8 @@ struct bench_run {
 };
 
 // A scene's G-buffers as its renderer stores them for each variant: ray-cast on first use,
-// one per depth convention and normal space, and uploaded once each, for every chain to share.
+// one per depth convention and normal space (with settings.hpp's renderer_gbuffer albedo),
+// and uploaded once each, for every chain to share.
 class gbuffer_cache {
 public:
     gbuffer_cache(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, const aogen::truth::scene& t) : ctx_(ctx), scene_(s), tracer_(t) {}
@@ -102,7 +103,7 @@ private:
         o.normals = space;
         o.face_camera = false; // as the scene's renderer stores them (the reference's face the camera)
         const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(for_variant(scene_, v), tracer_, o);
-        return cache_.emplace(key, entry_type{aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(g), nullptr}).first->second;
+        return cache_.emplace(key, entry_type{renderer_gbuffer(g), nullptr}).first->second;
     }
 
     aogen::vulkan::context& ctx_;

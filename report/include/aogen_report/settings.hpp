@@ -20,6 +20,7 @@
 #include <aogen/params.hpp>
 #include <aogen/presets.hpp>
 #include <aogen/vulkan/chain.hpp>
+#include <aogen_scenes/gbuffer.hpp>
 #include <aogen_scenes/scene.hpp>
 
 #include <algorithm>
@@ -33,6 +34,14 @@ inline aogen::scenes::scene for_variant(aogen::scenes::scene s, const aogen::var
 {
     s.camera.depth = v.depth;
     return s;
+}
+
+// The G-buffer a scene's renderer uploads, from its ray-cast `g`: depth and normals, and --
+// the built-in scenes being one grey material -- finalize_params' default albedo in every
+// pixel (read by -mbg variants only, which therefore write their -mb twin's AO).
+inline aogen::vulkan::gbuffer renderer_gbuffer(const aogen::scenes::gbuffer& g)
+{
+    return aogen::with_uniform_albedo(aogen::scenes::to_gbuffer<aogen::vulkan::gbuffer>(g), aogen::finalize_params{}.albedo);
 }
 
 // Why `v` cannot run on `s` ("" when it can): its projection is not the camera's, or it

@@ -11,8 +11,8 @@
 //   decisions (smooth|step: SSAO's per-sample decisions, variant extra -step),
 //   precision (fp32|fp16: 16-bit arithmetic in the AO pass, variant extra -fp16),
 //   upsample (depth_aware|nearest: how a half-resolution target reaches the screen,
-//   variant extra -nearest), multi_bounce (off|on: the last pass's multi-bounce, variant
-//   extra -mb), bent_normals (off|on: bent normals beside the AO, variant extra -bn; GTAO
+//   variant extra -nearest), multi_bounce (off|on|gbuffer: the last pass's multi-bounce
+//   with one albedo, variant extra -mb, or each pixel's from the albedo G-buffer, -mbg), bent_normals (off|on: bent normals beside the AO, variant extra -bn; GTAO
 //   and VBAO compute variants).
 //
 // A scene file (`--scene SCENE.json`) says what the renderer has and needs:
@@ -136,7 +136,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     if (in.has("decisions")) m.decisions = name_list(in, "decisions", ssao_decisions_names);
     if (in.has("precision")) m.fp16 = bool_list(in, "precision", "fp16", "fp32");
     if (in.has("upsample")) m.upsample = name_list(in, "upsample", upsample_mode_names);
-    if (in.has("multi_bounce")) m.multi_bounce = bool_list(in, "multi_bounce", "on", "off");
+    if (in.has("multi_bounce")) m.multi_bounce = name_list(in, "multi_bounce", multi_bounce_mode_names);
     if (in.has("bent_normals")) m.bent_normals = bool_list(in, "bent_normals", "on", "off");
     return m;
 }
