@@ -11,7 +11,7 @@
 // Binding AO_BINDING_OUTPUT: the output, a storage image of the pass's output size (the AO target's; the screen's for upsample) in the
 // format AO_OUTPUT_FORMAT (codegen::options::output_format): r8 (R8_UNORM, the default),
 // rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
-// written is ao_output(ao_pass(pixel)), finite and in [0, 1], in .r; multi-channel
+// written is ao_output(ao_pass(pixel), pixel), finite and in [0, 1], in .r; multi-channel
 // formats get (ao, 0, 0, 1), or with AO_BENT_NORMALS (ao, encoded bent normal)
 // (common/core.glsl's ao_value and ao_output_texel).
 //

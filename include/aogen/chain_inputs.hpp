@@ -35,7 +35,7 @@ struct gbuffer {
     int width = 0, height = 0;
     std::vector<float> depth;   // width × height raw depth values
     std::vector<float> normals; // width × height × 4 (xyz used); may be empty for reconstructed normals
-    // width × height × 4, linear reflectance in rgb (a used); read by -mbg variants only
+    // width × height × 4, linear reflectance in rgb (a unused); read by -mbg variants only
     // (common/core.glsl's ao_albedo), may be empty for every other
     std::vector<float> albedo;
 };
