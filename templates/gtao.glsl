@@ -2,7 +2,7 @@
 // with Jimenez's cosine-weighted slice integral in place of the seed's (see "Why not the
 // seed's formula" below). Uniform block: GtaoUniforms (u.proj, u.inv_proj,
 // u.world_to_view, u.radius, u.thickness_bias, u.strength, u.falloff_range,
-// u.thin_occluder).
+// u.thin_occluder, u.frame_step).
 //
 // Per pixel, with P its view-space position, V the direction to the camera and n the
 // normal (normals.glsl; it faces V), for each of AO_GTAO_SLICES slices -- screen
@@ -13,9 +13,10 @@
 //      (common/slices.glsl's ao_slice_projected_normal, as the radius and slice frame);
 //   2. march AO_GTAO_STEPS steps to each side along the direction in screen space, at
 //      full resolution, step j at j / STEPS of the radius projected at P's depth (capped
-//      at half the screen's height), keeping per side the largest cosine between V and the
-//      direction to the sample's view-space point (the highest horizon). Samples off
-//      screen, on background, on the pixel itself, or farther than
+//      at half the screen's height; later frames move the inner steps within their strata:
+//      common/slices.glsl's ao_slice_step_pixels, u.frame_step), keeping per side the
+//      largest cosine between V and the direction to the sample's view-space point (the
+//      highest horizon). Samples off screen, on background, on the pixel itself, or farther than
 //      radius * (1 + thickness_bias * 10) from P do not raise the horizon; nearer ones
 //      fade in over the falloff range (ao_gtao_horizon_cos: falloff, thin occluders);
 //   3. horizon angles h+ = acos(cos+) in [0, pi], h- = -acos(cos-) in [-pi, 0], each
@@ -181,7 +182,7 @@ ao_value ao_pass(ivec2 target_pixel)
         float cos_ahead = -sin_n;
         float cos_behind = sin_n;
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
-            float distance = radius_pixels * (float(j) / float(AO_GTAO_STEPS));
+            float distance = ao_slice_step_pixels(j, AO_GTAO_STEPS, radius_pixels, u.frame_step);
             vec2 offset = dir * distance;
             cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, distance, p, P, V, max_distance, -sin_n));
             cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, distance, p, P, V, max_distance, sin_n));

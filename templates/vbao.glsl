@@ -1,7 +1,8 @@
 // vbao.glsl -- visibility-bitmask AO (Therrien, Levesque and Gilet 2023, "Screen Space
 // Indirect Lighting with Visibility Bitmask"), on gtao.glsl's slices, with sectors weighted
 // so that the result is aogen's cosine-weighted AO. Uniform block: VbaoUniforms (u.proj,
-// u.inv_proj, u.world_to_view, u.radius, u.thickness in world units, u.strength).
+// u.inv_proj, u.world_to_view, u.radius, u.thickness in world units, u.strength,
+// u.frame_step).
 //
 // Per pixel, with P its view-space position, V the direction to the camera and n the
 // normal (normals.glsl; it faces V), for each of AO_VBAO_SLICES slices -- screen
@@ -12,7 +13,8 @@
 //      lie in the hemisphere around the normal are the angles theta in [n - pi/2, n + pi/2],
 //      theta measured from V, positive toward `side`;
 //   2. march AO_VBAO_STEPS steps to each side at gtao.glsl's screen positions (step j at
-//      j / STEPS of the radius projected at P's depth, capped at half the screen's height).
+//      j / STEPS of the radius projected at P's depth, capped at half the screen's height;
+//      later frames move the inner steps: common/slices.glsl's ao_slice_step_pixels).
 //      A sample's surface point S (its front) and S pushed u.thickness away from the camera
 //      along its view ray (its back) are seen from P at two angles; the object is taken to
 //      fill the wedge between them, so the sectors of that wedge are marked occluded in the
@@ -241,7 +243,7 @@ ao_value ao_pass(ivec2 target_pixel)
 
         uint occluded = 0u;
         for (int j = 1; j <= AO_VBAO_STEPS; ++j) {
-            float distance = radius_pixels * (float(j) / float(AO_VBAO_STEPS));
+            float distance = ao_slice_step_pixels(j, AO_VBAO_STEPS, radius_pixels, u.frame_step);
             vec2 offset = dir * distance;
             occluded |= ao_vbao_sample(centre + offset, distance, p, P, V, n, 1.0, projected.y, radius);
             occluded |= ao_vbao_sample(centre - offset, distance, p, P, V, n, -1.0, projected.y, radius);

@@ -97,7 +97,8 @@ inline int output_scale(const variant& v)
 
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
 // target_w × target_h: each pass's std140 uniform block (the AO pass's with frame s.frame's
-// rotation of the noise, every one with the finalize settings), the noise tile the params name
+// rotation of the noise and, GTAO's and VBAO's, its step offset; every one with the finalize
+// settings), the noise tile the params name
 // (4×4 for GTAO, VBAO and SAO) and, for SSAO, the kernel inside its block (SAO's spiral
 // is inside its own).
 inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
@@ -108,7 +109,8 @@ inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int ta
     in.noise_size = v.tech == technique::ssao ? ssao.noise_size : 4;
     in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
     const vec2 tsize{float(target_w), float(target_h)};
-    const uniforms::extras e{temporal::frame_rotation(v, s.frame, s.frame_sequence), s.finalize};
+    const uniforms::extras e{temporal::frame_rotation(v, s.frame, s.frame_sequence), s.finalize,
+                            temporal::step_offset(s.frame_sequence, s.frame)};
     for (pass_kind pass : passes(v)) {
         if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules, e));
         else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size, e));

@@ -44,11 +44,13 @@ struct camera {
 inline constexpr vec2 still_frame{1.0f, 0.0f};
 
 // What the blocks carry besides the camera and each pass's own settings: this frame's turn
-// of the noise (AO passes: temporal::frame_rotation; (1, 0) at frame 0, the still frame) and
-// the finalize step's settings (every pass: read by the last pass of a -mb variant).
+// of the noise (AO passes: temporal::frame_rotation; (1, 0) at frame 0, the still frame), the
+// finalize step's settings (every pass: read by the last pass of a -mb variant) and, for the
+// slice techniques, this frame's move of their steps (temporal::step_offset; 0 at frame 0).
 struct extras {
     vec2 frame_rotation = still_frame;
     finalize_params finalize;
+    float frame_step = 0.0f; // GTAO, VBAO: this frame's offset of the inner slice steps (temporal::step_offset)
 };
 
 // Members every AO pass block starts with: the projection both ways, the normal
@@ -75,7 +77,7 @@ inline layout::block_desc ssao_block(int samples)
 inline layout::block_desc gtao_block()
 {
     layout::struct_desc s{"GtaoUniforms", camera_members()};
-    for (const char* name : {"radius", "thickness_bias", "strength", "falloff_range", "thin_occluder"}) s.members.push_back({name, "float"});
+    for (const char* name : {"radius", "thickness_bias", "strength", "falloff_range", "thin_occluder", "frame_step"}) s.members.push_back({name, "float"});
     return {s, {}};
 }
 
@@ -85,7 +87,7 @@ inline layout::block_desc gtao_block()
 inline layout::block_desc vbao_block()
 {
     layout::struct_desc s{"VbaoUniforms", camera_members()};
-    for (const char* name : {"radius", "thickness", "strength"}) s.members.push_back({name, "float"});
+    for (const char* name : {"radius", "thickness", "strength", "frame_step"}) s.members.push_back({name, "float"});
     return {s, {}};
 }
 
@@ -184,6 +186,7 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
     w.set("strength", p.strength);
     w.set("falloff_range", p.falloff_range);
     w.set("thin_occluder", p.thin_occluder);
+    w.set("frame_step", e.frame_step);
     return w.bytes();
 }
 
@@ -197,6 +200,7 @@ inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, v
     w.set("radius", p.radius);
     w.set("thickness", p.thickness * p.radius); // at most 1e8: finite
     w.set("strength", p.strength);
+    w.set("frame_step", e.frame_step);
     return w.bytes();
 }
 

@@ -3,6 +3,8 @@
 // normal projected onto that plane, the slice's cosine-weighted measure, and (-bn) its bent
 // vector. gtao.glsl's header derives the measure.
 //
+// Each slice marches its steps at ao_slice_step_pixels (this frame's step positions).
+//
 // A slice is the plane through P spanned by V (toward the camera) and `side`, the screen
 // direction `dir` made perpendicular to V. Angles within it are signed angles from V,
 // positive toward `side`; the hemisphere around the normal is [n - pi/2, n + pi/2], n the
@@ -27,6 +29,19 @@ void ao_slice_radius(vec3 P, out float radius_pixels, out float radius)
     radius_pixels = min(u.radius * pixels_per_unit, 0.5 * fsize.y);
     if (!ao_is_finite(radius_pixels)) radius_pixels = 0.0;
     radius = pixels_per_unit > 0.0 ? min(u.radius, radius_pixels / pixels_per_unit) : u.radius;
+}
+
+// How far step j (1..steps) of a slice's march lies from the pixel, in full-resolution
+// pixels, for a radius of `radius_pixels`: j / steps of it at frame 0, and from there each
+// inner step j < steps moved inward by `frame_step` (u.frame_step, temporal::step_offset:
+// in [0, 1) of a step, 0 at frame 0) to (j - frame_step) / steps, so that frames put it
+// anywhere in its stratum ((j - 1) / steps, j / steps]. The outermost step stays at the
+// radius: horizons are maxima, and the farthest step is the one that sees a wall's top
+// (aogen/temporal.hpp). At frame 0, j - 0 is j exactly: the still frame's steps to the bit.
+float ao_slice_step_pixels(int j, int steps, float radius_pixels, float frame_step)
+{
+    float shift = j < steps ? frame_step : 0.0;
+    return radius_pixels * ((float(j) - shift) / float(steps));
 }
 
 // The surface a slice tap at screen position `pos`, `distance` full-resolution pixels from

@@ -242,3 +242,27 @@ TEST_CASE("gtao slice integral: DESIGN.md's closed forms from exact horizons", "
         CHECK(ao == Approx(c.exact).margin(c.margin));
     }
 }
+
+TEST_CASE("gtao slice steps: frame 0's steps at j / N of the radius, later frames' inner steps moved inward", "[gtao][glslang]")
+{
+    // common/slices.glsl's ao_slice_step_pixels(j, N, radius, s): radius (j - s) / N for j < N,
+    // the radius itself for j = N (the temporal step offset s, in [0, 1) of a step).
+    struct step_case {
+        int j, steps;
+        double radius, offset, pixels;
+    };
+    const step_case cases[] = {
+        {1, 2, 10, 0, 5},      {2, 2, 10, 0, 10},     {1, 4, 8, 0, 2},      {3, 4, 8, 0, 6},      {4, 4, 8, 0, 8},
+        {1, 2, 10, 0.5, 2.5},  {2, 2, 10, 0.5, 10},   {1, 1, 7, 0.75, 7},   {3, 4, 8, 0.25, 5.5}, {4, 4, 8, 0.25, 8},
+        {1, 3, 30, 0.875, 1.25}, {2, 3, 30, 0.875, 11.25}, {3, 3, 30, 0.875, 30},
+    };
+    std::vector<std::string> expressions;
+    for (const step_case& c : cases)
+        expressions.push_back("ao_slice_step_pixels(" + std::to_string(c.j) + ", " + std::to_string(c.steps) + ", " + lit(c.radius) + ", " +
+                              lit(c.offset) + ")");
+    const std::vector<float> got = evaluate(expressions);
+    for (size_t i = 0; i < std::size(cases); ++i) {
+        INFO(expressions[i]);
+        CHECK(got[i] == Approx(cases[i].pixels).margin(1e-5));
+    }
+}

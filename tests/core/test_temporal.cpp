@@ -1,6 +1,7 @@
-// aogen/temporal.hpp: the frame index's turns of the noise, against their definitions —
-// the base-2 radical inverse written out by hand, a whole slice period, exact (1, 0) at
-// frame 0 — and the uniform member they reach.
+// aogen/temporal.hpp: the frame index's turns of the noise and moves of the slice steps,
+// against their definitions — the base-2 radical inverse written out by hand, the
+// stratification that makes turns and steps a (0, 2)-sequence, a whole slice period, exact
+// (1, 0) and 0 at frame 0 — and the uniform members they reach.
 #include <aogen/chain_inputs.hpp>
 #include <aogen/layout.hpp>
 #include <aogen/temporal.hpp>
@@ -92,6 +93,50 @@ TEST_CASE("temporal: the golden ratio and white sequences stay below 1 and repea
         CHECK(std::fabs(temporal::offset_turns(temporal::sequence::golden_ratio, f) - std::fmod(f * 0.6180339887498949, 1.0)) < 1e-5);
 }
 
+TEST_CASE("temporal: every sequence's step offset is 0 at frame 0 and in 0..1 after", "[temporal]")
+{
+    for (temporal::sequence s : {temporal::sequence::van_der_corput, temporal::sequence::golden_ratio, temporal::sequence::white}) {
+        INFO(temporal::to_name(s));
+        CHECK(bits_of(temporal::step_offset(s, 0)) == bits_of(0.0f));
+        std::set<float> seen;
+        for (uint32_t f : {1u, 2u, 3u, 1000u, 0x00ffffffu, 0x7fffffffu, 0xfffffffeu, 0xffffffffu}) {
+            const float o = temporal::step_offset(s, f);
+            CHECK(o >= 0.0f);
+            CHECK(o < 1.0f);
+            CHECK(bits_of(o) == bits_of(temporal::step_offset(s, f)));
+            seen.insert(o);
+        }
+        CHECK(seen.size() >= 6); // they move
+    }
+    // fract(f / rho^2), rho the plastic number (rho^3 = rho + 1), to the float's 24 bits.
+    const double rho = 1.324717957244746025960908854;
+    REQUIRE(std::fabs(rho * rho * rho - rho - 1) < 1e-12);
+    for (uint32_t f : {1u, 2u, 10u, 12345u})
+        CHECK(std::fabs(temporal::step_offset(temporal::sequence::golden_ratio, f) - std::fmod(f / (rho * rho), 1.0)) < 1e-5);
+}
+
+TEST_CASE("temporal: van der Corput's turns and step offsets stratify every 2^a x 2^b grid together", "[temporal]")
+{
+    // Sobol's second dimension written out: 0, 0.1b, 0.11b, 0.01b, 0.101b, 0.001b, 0.011b, 0.111b.
+    const float expected[8] = {0, 0.5f, 0.75f, 0.25f, 0.625f, 0.125f, 0.375f, 0.875f};
+    for (uint32_t f = 0; f < 8; ++f) CHECK(temporal::step_offset(temporal::sequence::van_der_corput, f) == expected[f]);
+    // The definition of a (0, k, 2)-net in base 2: the first 2^k frames' pairs (turn, step)
+    // put exactly one frame in each box of the 2^a x 2^(k-a) grid over [0, 1)^2, every a.
+    for (int k = 0; k <= 10; ++k) {
+        const uint32_t n = 1u << k;
+        for (int a = 0; a <= k; ++a) {
+            std::set<std::pair<uint32_t, uint32_t>> boxes;
+            for (uint32_t f = 0; f < n; ++f) {
+                const double turn = temporal::offset_turns(temporal::sequence::van_der_corput, f);
+                const double step = temporal::step_offset(temporal::sequence::van_der_corput, f);
+                boxes.insert({uint32_t(std::floor(turn * double(1u << a))), uint32_t(std::floor(step * double(1u << (k - a))))});
+            }
+            INFO("first " << n << " frames, a " << (1u << a) << " x " << (1u << (k - a)) << " grid");
+            CHECK(boxes.size() == n);
+        }
+    }
+}
+
 TEST_CASE("temporal: a frame turns slices within their period and SSAO's kernel within a whole turn", "[temporal]")
 {
     // GTAO's and VBAO's S slices lie s pi / S apart: turning them by pi / S is no turn at all.
@@ -114,28 +159,43 @@ TEST_CASE("temporal: a frame turns slices within their period and SSAO's kernel 
     }
 }
 
-TEST_CASE("temporal: chain_settings' frame reaches the AO pass's frame_rotation and no other block", "[temporal]")
+TEST_CASE("temporal: chain_settings' frame reaches the AO pass's frame_rotation and frame_step and no other block", "[temporal]")
 {
-    const variant v = variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs");
-    chain_settings s;
-    s.camera = {mat4{}, perspective(1, 1, 1, 3)};
-    const chain_inputs still = inputs_for(v, s, 80, 45);
-    s.frame = 5;
-    const chain_inputs moved = inputs_for(v, s, 80, 45);
-    const size_t at = offset_of(uniforms::gtao_block(), "frame_rotation");
-    const vec2 expected = temporal::frame_rotation(v, 5);
-    CHECK(float_at(still.uniforms[0], at) == 1.0f);
-    CHECK(float_at(still.uniforms[0], at + 4) == 0.0f);
-    CHECK(float_at(moved.uniforms[0], at) == expected.x);
-    CHECK(float_at(moved.uniforms[0], at + 4) == expected.y);
-    // Only those 8 bytes changed; the blur passes' blocks and the tile are the same.
-    REQUIRE(still.uniforms.size() == moved.uniforms.size());
-    size_t changed = 0;
-    for (size_t i = 0; i < still.uniforms[0].size(); ++i) changed += still.uniforms[0][i] != moved.uniforms[0][i];
-    CHECK(changed > 0);
-    CHECK(changed <= 8);
-    for (size_t p = 1; p < still.uniforms.size(); ++p) CHECK(still.uniforms[p] == moved.uniforms[p]);
-    CHECK(still.noise == moved.noise);
+    for (const char* name : {"gtao-2x3-half-bilateral-gbufworld-std-persp-cs", "vbao-2x3-half-denoise-gbufworld-std-persp-cs",
+                             "ssao-s16-half-bilateral-gbufworld-std-persp-cs"}) {
+        INFO(name);
+        const variant v = variant_from_name(name);
+        const layout::block_desc block = v.tech == technique::gtao   ? uniforms::gtao_block()
+                                         : v.tech == technique::vbao ? uniforms::vbao_block()
+                                                                     : uniforms::ssao_block(v.ssao_samples);
+        chain_settings s;
+        s.camera = {mat4{}, perspective(1, 1, 1, 3)};
+        const chain_inputs still = inputs_for(v, s, 80, 45);
+        s.frame = 5;
+        const chain_inputs moved = inputs_for(v, s, 80, 45);
+        const size_t at = offset_of(block, "frame_rotation");
+        const vec2 expected = temporal::frame_rotation(v, 5);
+        CHECK(float_at(still.uniforms[0], at) == 1.0f);
+        CHECK(float_at(still.uniforms[0], at + 4) == 0.0f);
+        CHECK(float_at(moved.uniforms[0], at) == expected.x);
+        CHECK(float_at(moved.uniforms[0], at + 4) == expected.y);
+        // The slice techniques' step offset: 0 at frame 0, frame 5's after (SSAO has none).
+        size_t expected_changes = 8;
+        if (has_slices(v.tech)) {
+            const size_t step_at = offset_of(block, "frame_step");
+            CHECK(float_at(still.uniforms[0], step_at) == 0.0f);
+            CHECK(float_at(moved.uniforms[0], step_at) == temporal::step_offset(temporal::sequence::van_der_corput, 5));
+            expected_changes += 4;
+        }
+        // Only those bytes changed; the blur passes' blocks and the tile are the same.
+        REQUIRE(still.uniforms.size() == moved.uniforms.size());
+        size_t changed = 0;
+        for (size_t i = 0; i < still.uniforms[0].size(); ++i) changed += still.uniforms[0][i] != moved.uniforms[0][i];
+        CHECK(changed > 0);
+        CHECK(changed <= expected_changes);
+        for (size_t p = 1; p < still.uniforms.size(); ++p) CHECK(still.uniforms[p] == moved.uniforms[p]);
+        CHECK(still.noise == moved.noise);
+    }
 }
 
 TEST_CASE("temporal: sequence names", "[temporal]")

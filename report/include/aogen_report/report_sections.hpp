@@ -96,7 +96,8 @@ inline std::vector<std::string> measurement_facts(const report_data& d, const re
     facts.push_back("Reference: Embree, " + std::to_string(d.grid * d.grid) + " stratified cosine-distributed rays per pixel");
     if (d.frames > 1)
         facts.push_back("Temporal accumulation: " + std::to_string(d.frames) + " frames per variant and scene (frame index 0.." +
-                        std::to_string(d.frames - 1) + ", aogen::temporal's van der Corput turns of the noise), their plain mean scored");
+                        std::to_string(d.frames - 1) + ", aogen::temporal's van der Corput turns of the noise and, GTAO's and VBAO's, Sobol moves of the "
+                        "inner steps), their plain mean scored");
     int fewest = d.timing.iterations, most = 0;
     for (const scene_record& s : d.scenes) fewest = std::min(fewest, s.iterations), most = std::max(most, s.iterations);
     facts.push_back("Times: per scene, every chain bound once (device-local memory), " + fixed(d.timing.warmup_ms, 0) +
@@ -132,7 +133,8 @@ inline std::string how_to_read(int frames)
            "upsampling. *Default*: the variant's default parameters (seed presets, lengths scaled to "
            "the scene's AO radius). *Calibrated*: the output raised to the power p fitted on the *other* scenes (leave-one-out), "
            "so no scene is scored with a fit made on it. *After " + std::to_string(frames) + " frames*: the plain mean of the variant's first " +
-           std::to_string(frames) + " frames, each turning the noise by the frame index's next rotation, with a still camera — what "
+           std::to_string(frames) + " frames, each turning the noise by the frame index's next rotation (and moving GTAO's and VBAO's inner steps by its "
+           "next step offset), with a still camera — what "
            "TAA's history shows once it has that many frames, the default output being frame 0. *Bent normal °* (`-bn` variants): "
            "the mean angle between the variant's bent normal and the traced one (the cosine-weighted mean of the unoccluded "
            "directions), over the pixels that show geometry, the mean over the scenes; the strips add a row per such variant "

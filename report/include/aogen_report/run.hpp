@@ -17,7 +17,8 @@
 //           diagnostic output is the shipped one), upsampled to full resolution and
 //           compared with the reference (metrics.hpp); its raw values before the guard
 //           counted (NaN, Inf, out of [0, 1], per pass). Then frames 1..frames-1 of the
-//           shipped chain (temporal.hpp's frame index turning the noise), and the plain
+//           shipped chain (temporal.hpp's frame index turning the noise and moving the slice
+//           techniques' inner steps), and the plain
 //           mean of all the frames compared with the reference: the AO a static camera
 //           shows after an accumulation of that many frames;
 //        c. timing: the shipped chains, their fetch floors and the point-cloud twins
