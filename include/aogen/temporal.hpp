@@ -19,9 +19,9 @@
 //   s = step_offset(f) in [0, 1), uploaded as the member `frame_step` (0 at frame 0):
 //     step_offset(seq, f)     frame f's step offset, in steps; 0 at f = 0
 //   so the frames' inner steps cover each step's whole stratum ((j − 1)/N, j/N] of the
-//   radius rather than its one end. The outermost step stays at the radius, where the frame
-//   is always looked at to its full reach: horizons are maxima over the steps, and the step
-//   that reaches farthest is the one that sees a wall's top — moving it inward lightens every
+//   radius rather than its one end. The outermost step stays at the radius, so every frame
+//   searches to its full reach: horizons are maxima over the steps, and the step that
+//   reaches farthest is the one that sees a wall's top — moving it inward lightens every
 //   frame, which no number of frames averages back (measured: README § Temporal).
 //
 //   Sequences (`sequence`; the default is van_der_corput, the others are what it was
@@ -31,7 +31,7 @@
 //                     pixel's rotations after N = 2^k frames are exactly stratified over the
 //                     period, and in between every prefix is as even as a prefix can be.
 //                     The step offset is the second dimension of Sobol's sequence (0, 1/2,
-//                     3/4, 1/4, 3/8, ...), whose first is van der Corput's: the pairs
+//                     3/4, 1/4, 5/8, 1/8, ...), whose first is van der Corput's: the pairs
 //                     (turn, step) of the first 2^k frames put one frame in every box of
 //                     every 2^a × 2^b grid with a + b = k (a (0, 2)-sequence in base 2), so
 //                     turns and steps are stratified together, not only each alone.

@@ -135,6 +135,14 @@ inline void set_camera(layout::writer& w, const camera& cam, vec2 target_size, i
     w.set("albedo", e.finalize.albedo);
 }
 
+// The slice techniques' step offset, in steps: temporal::step_offset's [0, 1), or up to a
+// whole step (1 puts the inner steps one step in, the first onto the pixel).
+inline void set_frame_step(layout::writer& w, const extras& e)
+{
+    require_finite_range("uniforms frame_step", e.frame_step, 0, 1);
+    w.set("frame_step", e.frame_step);
+}
+
 } // namespace detail
 
 // SsaoUniforms bytes. `kernel` holds the variant's samples (its size is the block's N, in
@@ -186,7 +194,7 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
     w.set("strength", p.strength);
     w.set("falloff_range", p.falloff_range);
     w.set("thin_occluder", p.thin_occluder);
-    w.set("frame_step", e.frame_step);
+    detail::set_frame_step(w, e);
     return w.bytes();
 }
 
@@ -200,7 +208,7 @@ inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, v
     w.set("radius", p.radius);
     w.set("thickness", p.thickness * p.radius); // at most 1e8: finite
     w.set("strength", p.strength);
-    w.set("frame_step", e.frame_step);
+    detail::set_frame_step(w, e);
     return w.bytes();
 }
 

@@ -206,3 +206,19 @@ TEST_CASE("temporal: sequence names", "[temporal]")
     CHECK_THROWS_WITH(temporal::sequence_from_name("halton", "--frame-sequence"),
                       Catch::Contains("--frame-sequence") && Catch::Contains("halton") && Catch::Contains("van_der_corput, golden_ratio, white"));
 }
+
+TEST_CASE("temporal: a step offset outside 0..1 or not finite is refused by name", "[temporal]")
+{
+    const uniforms::camera cam{mat4{}, perspective(1, 1, 1, 3)};
+    for (float bad : {-0.25f, 1.5f, std::nanf(""), INFINITY}) {
+        INFO(bad);
+        const uniforms::extras e{uniforms::still_frame, finalize_params{}, bad};
+        CHECK_THROWS_WITH(uniforms::pack_gtao(gtao_params{}, cam, {80, 45}, layout::rules::std140, 4, e),
+                          Catch::Contains("uniforms frame_step") && Catch::Contains("valid: 0..1"));
+        CHECK_THROWS_WITH(uniforms::pack_vbao(vbao_params{}, cam, {80, 45}, layout::rules::std140, 4, e), Catch::Contains("uniforms frame_step"));
+    }
+    for (float good : {0.0f, 0.5f, 1.0f}) {
+        const uniforms::extras e{uniforms::still_frame, finalize_params{}, good};
+        CHECK_NOTHROW(uniforms::pack_gtao(gtao_params{}, cam, {80, 45}, layout::rules::std140, 4, e));
+    }
+}
