@@ -118,10 +118,11 @@ TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[unifor
 
 TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[uniforms]")
 {
-    // 220 bytes of camera members, then five floats: 240 under every rule set.
-    CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 240);
-    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 240);
-    CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 240);
+    // 220 bytes of camera members, then six floats (the five settings and frame_step): 244
+    // bytes, which std140 and a cbuffer round up to 256; scalar keeps 244.
+    CHECK(layout::compute(uniforms::gtao_block(), rules::std140).size == 256);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::scalar).size == 244);
+    CHECK(layout::compute(uniforms::gtao_block(), rules::hlsl_cbuffer).size == 256);
     const std::vector<uint8_t> bytes =
         uniforms::pack_gtao(presets::taos_gtao().settings.gtao, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
     CHECK(float_at(bytes, 220) == 1.0f);  // radius (seed 001)
@@ -129,6 +130,7 @@ TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[unifor
     CHECK(float_at(bytes, 228) == 2.0f);  // strength exponent
     CHECK(float_at(bytes, 232) == 0.0f);  // falloff range: seed 001's hard cut-off
     CHECK(float_at(bytes, 236) == 0.0f);  // thin-occluder compensation: none
+    CHECK(float_at(bytes, 240) == 0.0f);  // frame_step: a still frame's steps
     gtao_params g = presets::taos_gtao().settings.gtao;
     g.falloff_range = 0.625f, g.thin_occluder = 1.5f;
     const std::vector<uint8_t> tuned = uniforms::pack_gtao(g, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
@@ -136,12 +138,12 @@ TEST_CASE("Taos GTAO block: sizes per rule set and the seed's numbers", "[unifor
     CHECK(float_at(tuned, 236) == 1.5f);
 }
 
-TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, strength", "[uniforms]")
+TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, strength, frame_step", "[uniforms]")
 {
     const layout::struct_layout l = layout::compute(uniforms::vbao_block(), rules::std140);
     CHECK(l.size == 240);
     CHECK(l.name == "VbaoUniforms");
-    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 232);
+    CHECK(layout::compute(uniforms::vbao_block(), rules::scalar).size == 236);
     vbao_params p;
     p.radius = 2.0f, p.thickness = 0.25f, p.strength = 1.5f;
     const std::vector<uint8_t> bytes = uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140);
@@ -151,7 +153,8 @@ TEST_CASE("VBAO block: GTAO's camera, then radius, thickness in world units, str
     CHECK(float_at(bytes, 220) == 2.0f);   // radius
     CHECK(float_at(bytes, 224) == 0.5f);   // thickness: 0.25 of the radius, in world units
     CHECK(float_at(bytes, 228) == 1.5f);   // strength
-    for (size_t pad = 232; pad < 240; ++pad) CHECK(bytes[pad] == 0);
+    CHECK(float_at(bytes, 232) == 0.0f);   // frame_step: a still frame's steps
+    for (size_t pad = 236; pad < 240; ++pad) CHECK(bytes[pad] == 0);
     p.thickness = -1;
     CHECK_THROWS_WITH(uniforms::pack_vbao(p, {mat4{}, perspective(1, 1, 1, 3)}, {960, 540}, rules::std140), Catch::Contains("vbao.thickness"));
 }
