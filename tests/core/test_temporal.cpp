@@ -4,6 +4,7 @@
 // (1, 0) and 0 at frame 0 — and the uniform members they reach.
 #include <aogen/chain_inputs.hpp>
 #include <aogen/layout.hpp>
+#include <aogen/plan.hpp>
 #include <aogen/temporal.hpp>
 
 #include <catch2/catch.hpp>
@@ -165,9 +166,7 @@ TEST_CASE("temporal: chain_settings' frame reaches the AO pass's frame_rotation 
                              "ssao-s16-half-bilateral-gbufworld-std-persp-cs"}) {
         INFO(name);
         const variant v = variant_from_name(name);
-        const layout::block_desc block = v.tech == technique::gtao   ? uniforms::gtao_block()
-                                         : v.tech == technique::vbao ? uniforms::vbao_block()
-                                                                     : uniforms::ssao_block(v.ssao_samples);
+        const layout::block_desc block = codegen::uniform_block(v, pass_kind::ao);
         chain_settings s;
         s.camera = {mat4{}, perspective(1, 1, 1, 3)};
         const chain_inputs still = inputs_for(v, s, 80, 45);

@@ -38,7 +38,7 @@ chain_inputs with_noise_turned(chain_inputs in, vec2 turn)
 chain_inputs with_steps_moved(chain_inputs in, const variant& v, float offset)
 {
     if (!has_slices(v.tech)) return in;
-    const layout::block_desc block = v.tech == technique::gtao ? uniforms::gtao_block() : uniforms::vbao_block();
+    const layout::block_desc block = codegen::uniform_block(v, pass_kind::ao);
     for (const layout::member_layout& m : layout::compute(block, layout::rules::std140).members)
         if (m.name == "frame_step") {
             std::memcpy(in.uniforms[0].data() + m.offset, &offset, sizeof offset);
