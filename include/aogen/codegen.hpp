@@ -18,8 +18,9 @@
 //       ...
 //
 //   The uniform block is not in the templates: it is declared here from aogen/uniforms.hpp
-//   (ssao_block(samples), gtao_block(), vbao_block(), blur_block()) by layout::declare under std140, so
-//   the shader's block and the bytes uniforms::pack_* writes agree by construction. The
+//   (ssao_block(samples), gtao_block(), vbao_block(), sao_block(taps), blur_block()) by
+//   layout::declare under std140, so the shader's block and the bytes uniforms::pack_*
+//   writes agree by construction. The
 //   binding numbers and the seeds' constants are #defines from this header for the same
 //   reason. `#line 1 "<file>"` before every template makes compiler messages name the
 //   template file and its own line ("ERROR: ssao.glsl:42: ...").

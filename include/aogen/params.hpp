@@ -1,6 +1,6 @@
 // aogen/params.hpp — the run-time settings of each AO pass, their defaults and ranges.
 //
-// One plain struct per pass (XeGTAO style): every number an SSAO, GTAO, VBAO or blur pass
+// One plain struct per pass (XeGTAO style): every number an SSAO, GTAO, VBAO, SAO or blur pass
 // reads at run time -- what its uniform block and the data it uploads (kernel, noise tile)
 // carry -- is a field here, with its default, its valid range and its meaning written next
 // to it. The ranges are `static constexpr` members beside the fields (range.hpp), so the
@@ -10,8 +10,9 @@
 //   gtao_params   ground-truth AO, slice/horizon based (Taos GTAOPass)
 //   vbao_params   visibility-bitmask AO: GTAO's slices with a 32-sector mask and a thickness
 //   sao_params    scalable ambient obscurance: the Alchemy estimator over spiral taps
-//   blur_params   the denoise pass after either: the bilateral blur's and the denoise
-//                 filter's weights and depth terms, and the depth-aware upsample's
+//   blur_params   the passes after the AO pass, whichever its technique: the bilateral
+//                 blur's and the denoise filter's weights and depth terms, and the
+//                 depth-aware upsample's
 //   finalize_params  what the chain's last pass does to the AO it writes: the albedo of a
 //                 multi-bounce variant (-mb)
 //   ao_settings   all six: what a chain of any variant reads (chain_inputs.hpp)

@@ -22,7 +22,8 @@
 //   shaders read .r either way and the AO is bit-identical; D32 holds only [0, 1], so
 //   other values are an error there); normals as RGBA32F (xyz; ignored by
 //   reconstructed-normal variants); the noise tile as RGBA32F.
-//   Between passes, the AO is an R8_UNORM image of the AO target size: the G-buffer's
+//   Between passes, the AO is an R8_UNORM image (R8G8B8A8_UNORM for a -bn variant's passes
+//   and with the rgba8 output format: passes.hpp) of the AO target size: the G-buffer's
 //   size, or ((w + 1) / 2, (h + 1) / 2) at half resolution (a storage image for compute,
 //   a colour attachment for fragment); a half-resolution variant's upsample pass writes
 //   one of the G-buffer's size (output_size: the size of what the chain returns). run_options::clear fills every

@@ -9,12 +9,15 @@
 // Defaults are what a user gets (aogen/params.hpp): GTAO's tuned defaults, its radius
 // gtao_params::radius_per_ao_radius × the scene's AO radius R (the ground truth's radius);
 // VBAO's defaults likewise, radius vbao_params::radius_per_ao_radius × R (its thickness is a
-// fraction of the radius, so it scales with R by itself);
-// for SSAO the seed presets (not tuned yet), Taos' for the strength output form and Unique
-// Engine's for power/intensity, the hemisphere R — with every length scaled to the scene:
-// SSAO's bias keeps the presets' ratio to the
-// radius (0.025 at 0.5: 5 % of R), and the linear bilateral depth term's sharpness
-// (10 per unit at R = 1) scales with 1/R, so every scene is seen at the same relative scale.
+// fraction of the radius, so it scales with R by itself); SAO's likewise, radius
+// sao_params::radius_per_ao_radius × R (its bias is a share of the radius); for SSAO the
+// tuned defaults (ssao_params{}), radius ssao_params::radius_per_ao_radius × R, except where
+// the tuner did not search: a variant with the seeds' step decisions (-step) or Unique
+// Engine's power/intensity output (-powint) runs the seeds' presets, Taos' for the strength
+// form and Unique Engine's for power/intensity, at the radius R — with every length scaled
+// to the scene: SSAO's bias keeps its settings' ratio to the radius (0.025 at 0.5: 5 % of
+// it), and the linear bilateral depth term's sharpness (10 per unit at R = 1) scales with
+// 1/R, so every scene is seen at the same relative scale.
 #pragma once
 
 #include <aogen/params.hpp>
