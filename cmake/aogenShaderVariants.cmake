@@ -3,7 +3,7 @@
 #     [SPEC <file.json>]            a variant spec (names and/or matrices)
 #     [SCENE <file.json>]           what the renderer has and needs: selects features
 #     [TARGETS <t>...]              spv glsl essl hlsl hlsl60 msl msl_ios wgsl (default: spv;
-#                                   wgsl needs Node.js and the WGSL tools: README § WebGPU)
+#                                   wgsl needs Node.js and the WGSL tools: docs/webgpu.md § WebGPU)
 #     [OUTPUT_DIR <dir>])           default: ${CMAKE_CURRENT_BINARY_DIR}/aogen/<target>
 #
 # Generates the variants' shaders at build time with `aogen generate` and makes the

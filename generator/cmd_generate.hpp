@@ -74,7 +74,7 @@ inline std::string spirv_array(const std::string& name, const std::vector<uint32
     return out + "\n};\n";
 }
 
-// How aogen's own tests check a target's text for `v` (README § GL runner), compute and
+// How aogen's own tests check a target's text for `v` (docs/webgpu.md § GL runner), compute and
 // fragment alike:
 //   executed       run and compared per pixel with the SPIR-V (spv itself: the Vulkan
 //                  harness; glsl, essl: aogen::gl on OpenGL 4.5 / ES 3.2)

@@ -9,7 +9,7 @@
 # saved as build-fuzz/findings/<target>/crash-*, timeout-*, oom-* or leak-*. Every target
 # runs even after one has failed. Reproduce one on the stack they run on (below) with
 #   (ulimit -s 1024; build-fuzz/tests/fuzz/aogen_fuzz_<target> FILE)
-# and keep it under tests/fuzz/findings/ with a note (README there).
+# and keep it under tests/fuzz/findings/ with a note (tests/fuzz/findings/README.md).
 #
 # Each target's corpus grows in build-fuzz/corpus/<target>/, kept between runs, so a run
 # continues where the last one stopped; the seeds in tests/fuzz/corpus/<target>/ are read,

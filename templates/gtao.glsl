@@ -30,7 +30,7 @@
 //
 // THE SLICE INTEGRAL (Jimenez et al. 2016, "Practical Real-Time Strategies for Accurate
 // Indirect Occlusion"; the form XeGTAO uses)
-//   aogen's AO is the cosine-weighted visibility (DESIGN.md):
+//   aogen's AO is the cosine-weighted visibility (docs/design.md#ground-truth):
 //       AO = 1/pi * integral over the hemisphere of V(w) (n . w) dw.
 //   Write directions in slice coordinates around V: phi in [0, pi), the slice's angle on
 //   screen, and theta in [-pi, pi], the signed angle of w from V within that slice's

@@ -38,8 +38,8 @@
 //   edge and the mask is GTAO's horizon, quantised to 32 sectors.
 //
 // COSINE-WEIGHTED SECTORS
-//   aogen's AO is the cosine-weighted visibility (DESIGN.md); in slice coordinates
-//   (gtao.glsl's derivation) AO = 1/pi * integral over phi of |n_p| * integral of V(theta)
+//   aogen's AO is the cosine-weighted visibility (docs/design.md#ground-truth); in slice
+//   coordinates (gtao.glsl's derivation) AO = 1/pi * integral over phi of |n_p| * integral of V(theta)
 //   cos(theta - n) |sin theta| dtheta. So the measure of an angle interval within a slice is
 //   m(theta) dtheta = cos(theta - n) |sin theta| dtheta, not dtheta: directions near V cover
 //   little solid angle, directions near the view plane much. Sectors of equal angle would

@@ -4,7 +4,7 @@
 //   One enum per choice axis of a variant (variant.hpp), each with its table of canonical
 //   names (lower case, '_' between words) read by to_name(), the *_from_name() readers, the
 //   command line and JSON through names.hpp; the readers also accept '-' for '_'
-//   ("gbuffer-world", as DESIGN.md spells the axis values):
+//   ("gbuffer-world", as docs/design.md § Variant axes spells the axis values):
 //
 //     technique          ssao, gtao, vbao, sao; has_slices(t): GTAO and VBAO count slices ×
 //                        steps; has_samples(t): SSAO and SAO count samples
@@ -89,7 +89,7 @@ inline constexpr std::array<enum_name<depth_convention>, 3> depth_convention_nam
     {depth_convention::reversed_infinite, "reversed_infinite"},
 }};
 
-// Where a pass gets its surface normal from (see DESIGN.md).
+// Where a pass gets its surface normal from (docs/design.md § Variant axes).
 enum class normal_source {
     gbuffer_world,  // world-space G-buffer normal, rotated into view space (Taos)
     gbuffer_view,   // view-space normal target (Unique Engine's normal pre-pass)

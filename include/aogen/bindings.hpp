@@ -1,6 +1,6 @@
 // aogen/bindings.hpp — what every pass binds, and at which binding number: one table per
 // pass family, read by codegen (declarations and AO_BINDING_* defines), the manifest, the
-// Vulkan and GL runners and README's table.
+// Vulkan and GL runners and the table of docs/bindings.md.
 //
 // WHAT
 //   A pass reads and writes resources by role (resource_role): its uniform block, the depth
@@ -142,7 +142,7 @@ inline std::optional<uint32_t> sampler_binding_of(pass_family f, resource_role r
     return binding_of(f, role, m) + 1;
 }
 
-// What a role's resource holds, in a few words (README's table).
+// What a role's resource holds, in a few words (docs/bindings.md's table).
 inline const char* what_it_holds(resource_role r)
 {
     switch (r) {
@@ -159,8 +159,8 @@ inline const char* what_it_holds(resource_role r)
     return "";
 }
 
-// The binding tables as Markdown (README's § Bindings holds this text, and a test keeps the
-// two equal): per family, a row per role with its binding in each model.
+// The binding tables as Markdown (docs/bindings.md § Bindings holds this text, and a test
+// keeps the two equal): per family, a row per role with its binding in each model.
 inline std::string binding_table_markdown()
 {
     std::string md = "| passes | role | holds | vulkan | webgpu |\n|---|---|---|---:|---|\n";

@@ -33,8 +33,8 @@
 //     // upload g.data(), g.size() * sizeof(aogen::vec4) bytes
 //
 // WHY
-//   * Same seed, same bits on every compiler, standard library and libm (DESIGN.md:
-//     determinism). Random numbers come from aogen/random.hpp's PCG32, never from
+//   * Same seed, same bits on every compiler, standard library and libm (docs/design.md
+//     § Determinism). Random numbers come from aogen/random.hpp's PCG32, never from
 //     std::*_distribution. Random points are accepted or rejected in exact integer
 //     arithmetic, so every platform keeps the same draws. The cosine kernel uses rejection
 //     sampling in the unit disk instead of the usual concentric or polar map, because those

@@ -10,7 +10,7 @@
 //   default_matrix() is the set `aogen generate` builds when no variant is named:
 //     SSAO 8/16/32/64 samples × blur bilateral/box/denoise/none × full/half, compute;
 //     GTAO slices 1, 2, 3, 4, 8 × steps 2, 3, 4 × blur bilateral/box/denoise/none, compute
-//     (half resolution: DESIGN.md's default);
+//     (half resolution: the default, docs/design.md § Variant axes);
 //     half-resolution variants end with the depth-aware upsample;
 //     the seeds' own configurations as fragment variants (presets.hpp: Taos SSAO, Taos
 //     GTAO, Unique Engine SSAO, the point-cloud viewer's ssao.wgsl), without it;

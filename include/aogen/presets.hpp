@@ -95,13 +95,14 @@ inline preset taos_ssao()
 
 // Taos GTAOPass (seed 001): radius 1.0, thickness bias 0.1, strength exponent 2.0, and
 // "the same separable bilateral / box-blur pipelines as SSAO" — the 'quality' blur.
-// Slices × steps are not in the seed: 2 × 3 is DESIGN.md's default (ours). Half
+// Slices × steps are not in the seed: 2 × 3 is the variant's default (ours; docs/design.md
+// § Variant axes). Half
 // resolution and G-buffer world normals are assumed from Taos' SSAO pass.
 inline preset taos_gtao()
 {
     preset p{"taos_gtao", seed_engine_variant(technique::gtao), {}};
-    p.variant.gtao_slices = 2;  // ours (DESIGN.md default)
-    p.variant.gtao_steps = 3;   // ours (DESIGN.md default)
+    p.variant.gtao_slices = 2;  // ours (the variant's default)
+    p.variant.gtao_steps = 3;   // ours (the variant's default)
     p.variant.half_resolution = true;
     p.variant.normals = normal_source::gbuffer_world;
     p.variant.blur = blur_mode::bilateral;

@@ -18,7 +18,7 @@
 //     aogen::random::disk_point p = aogen::random::draw_in_unit_disk(rng2);
 //
 // WHY
-//   * Same inputs, same bytes (DESIGN.md). std::mt19937 is portable, but every
+//   * Same inputs, same bytes (docs/design.md § Determinism). std::mt19937 is portable, but every
 //     std::uniform_*_distribution is implementation-defined: libstdc++, libc++ and MSVC
 //     turn the same engine output into different numbers. So aogen owns the whole chain:
 //     the generator (PCG32, small and well tested), the float conversion (top 24 bits

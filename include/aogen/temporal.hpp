@@ -22,7 +22,7 @@
 //   radius rather than its one end. The outermost step stays at the radius, so every frame
 //   searches to its full reach: horizons are maxima over the steps, and the step that
 //   reaches farthest is the one that sees a wall's top — moving it inward lightens every
-//   frame, which no number of frames averages back (measured: README § Temporal).
+//   frame, which no number of frames averages back (measured: BENCHMARKS.md § Reference measurements).
 //
 //   Sequences (`sequence`; the default is van_der_corput, the others are what it was
 //   measured against — tests/accuracy's "temporal" cases print the three side by side):

@@ -53,8 +53,8 @@
 
 namespace aogen {
 
-// Every axis of a variant, with DESIGN.md's defaults. The enums are axes.hpp's; the counts'
-// ranges sit beside them, as params.hpp's ranges sit beside its fields.
+// Every axis of a variant, with its default (docs/design.md § Variant axes). The enums are
+// axes.hpp's; the counts' ranges sit beside them, as params.hpp's ranges sit beside its fields.
 struct variant {
     technique tech = technique::ssao;
     // SSAO's kernel samples per pixel, N. Taos: 16, Unique Engine: 32, ssao.wgsl: 64.
@@ -62,7 +62,7 @@ struct variant {
     static constexpr int_range ssao_samples_range{1, 256};
     int ssao_samples = 16;
     // GTAO's and VBAO's (has_slices) slice directions per pixel, rotated per pixel by noise,
-    // and horizon samples per side of each slice. DESIGN.md defaults: 2 and 3.
+    // and horizon samples per side of each slice. Defaults: 2 and 3.
     static constexpr int_range gtao_slices_range{1, 16};
     int gtao_slices = 2;
     static constexpr int_range gtao_steps_range{1, 16};
@@ -86,7 +86,7 @@ struct variant {
     // 16-bit floats for the AO pass's arithmetic where its precision allows it (GTAO's
     // slice integration and horizon cosines, SSAO's tangent frame, sample offsets and
     // weights); depth reconstruction, screen positions and sums stay 32-bit. Needs the
-    // device's shaderFloat16 (VK_KHR_shader_float16_int8). DESIGN.md default: off. Not
+    // device's shaderFloat16 (VK_KHR_shader_float16_int8). Default: off. Not
     // with SAO: its per-tap sum is a ratio of squared lengths that 16 bits cannot hold.
     bool fp16 = false;
     // How a half-resolution target reaches the screen (upsample_mode): by the depth-aware
@@ -107,12 +107,12 @@ struct variant {
     // Multi-bounce: the chain's last pass brightens the AO it writes by the inter-reflections
     // of surfaces of albedo rho (the GTAO paper's fit, common/core.glsl's ao_multi_bounce):
     // one rho for the image (finalize_params::albedo, -mb) or each pixel's from the albedo
-    // G-buffer (-mbg). Every technique. DESIGN.md default: off.
+    // G-buffer (-mbg). Every technique. Default: off.
     multi_bounce_mode multi_bounce = multi_bounce_mode::off;
     // Bent normals: every pass also writes the pixel's bent normal -- the cosine-weighted mean
     // of its unoccluded directions, in view space -- beside the AO, which needs a four-channel
     // output (AO in .r, the normal in .gba: common/core.glsl's ao_value). GTAO and VBAO,
-    // compute stage (a fragment pass's target is one channel). DESIGN.md default: off.
+    // compute stage (a fragment pass's target is one channel). Default: off.
     bool bent_normals = false;
 };
 

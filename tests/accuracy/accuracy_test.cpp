@@ -1,10 +1,10 @@
 // Each technique's AO against the truth, on the GPU: the variants users get (default axes
 // and default settings), compute and fragment, the AO pass alone, the denoise chain and
 // reconstructed normals, run through the Vulkan harness on the closed-form scenes of
-// DESIGN.md (crease, groove, wall, sphere on a plane), a thin plank over a floor (the
-// one scene here whose occluders have a back side within reach: VBAO's thickness and a
-// wedge's far edge matter there) and the floor to the horizon, and
-// scored against the Embree reference (aogen_report/reference.hpp, itself held to the
+// docs/design.md § Ground truth (crease, groove, wall, sphere on a plane), a thin plank over
+// a floor (the one scene here whose occluders have a back side within reach: VBAO's
+// thickness and a wedge's far edge matter there) and the floor to the horizon, and scored
+// against the Embree reference (aogen_report/reference.hpp, itself held to the
 // closed forms by the truth: and report: tests).
 //
 // Two figures per variant and scene, each bounded where a real bug lands outside:

@@ -8,9 +8,9 @@
 //   - the sequence: after 8 frames van der Corput's turns (and Sobol's steps) leave less
 //     noise (distance to the converged mean, 128 frames) than white noise's in every variant,
 //     and than the golden ratio's (with R2's steps) over the five variants together — not in
-//     each: in the denoised gtao-3x2 the golden ratio's is lower (README § Temporal). Summed
-//     over the scenes and printed side by side: these are the measurements behind the
-//     default (temporal.hpp).
+//     each: in the denoised gtao-3x2 the golden ratio's is lower (BENCHMARKS.md § Reference
+//     measurements). Summed over the scenes and printed side by side: these are the
+//     measurements behind the default (temporal.hpp).
 // The planted faults these tests must catch are in tests/mutants/mutants.json.
 #include "accuracy/truth_scenes.hpp"
 

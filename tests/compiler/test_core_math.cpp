@@ -2,7 +2,7 @@
 // shader's own SPIR-V (spirv_eval.hpp: spirv-opt folds the calls with constant arguments in
 // host float arithmetic), against the C++ library's double-precision acos and atan2. They
 // replace GLSL's mix, acos and atan so that every target computes the same operations
-// (README § GL runner); this checks that they are as accurate as a float result can be.
+// (docs/webgpu.md § GL runner); this checks that they are as accurate as a float result can be.
 
 #include <aogen/codegen.hpp>
 

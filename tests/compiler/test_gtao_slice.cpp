@@ -1,7 +1,7 @@
 // gtao.glsl's slice integral, evaluated from the shader's own GLSL, against integrals the
 // test computes independently: the 1D slice integral by quadrature, and the whole
-// hemisphere against DESIGN.md's closed forms (floor and infinite wall, a tilted wall, a
-// 90-degree groove, an open plane) with exact horizons.
+// hemisphere against the closed forms of docs/design.md § Ground truth (floor and infinite
+// wall, a tilted wall, a 90-degree groove, an open plane) with exact horizons.
 //
 // How the GLSL is evaluated without a GPU: the GTAO AO pass is generated as usual, with
 // entry_compute.glsl replaced by a test entry point whose main() calls gtao.glsl's
@@ -205,7 +205,7 @@ TEST_CASE("gtao slice integral: horizons outside [-1, 1], NaN and infinity, dege
     CHECK(r[13] == Approx(0.0).margin(1e-7));
 }
 
-TEST_CASE("gtao slice integral: DESIGN.md's closed forms from exact horizons", "[gtao][glslang]")
+TEST_CASE("gtao slice integral: docs/design.md's closed forms from exact horizons", "[gtao][glslang]")
 {
     const vec3d up{0, 1, 0};
     auto above = [](vec3d normal) { return [normal](vec3d w) { return dot(w, normal) >= 0; }; };

@@ -1,7 +1,7 @@
 // The math the templates write out so that every target computes the same operations
 // (common/core.glsl): no pass leaves acos, atan or a float mix() to the driver. Mesa's GL
 // and Vulkan front ends build acos and atan from different polynomials and round mix()
-// differently (a GTAO pixel 1/255 apart, an SSAO vote, a VBAO sector: README § GL runner),
+// differently (a GTAO pixel 1/255 apart, an SSAO vote, a VBAO sector: docs/webgpu.md § GL runner),
 // so a pass that calls them is bit-identical on one driver pair and not on another — a
 // property the GL comparison sees only when a pixel happens to sit at a rounding boundary.
 // Here it is stated directly, on every pass's SPIR-V: no GLSL.std.450 Acos, Atan, Atan2 or

@@ -1,10 +1,11 @@
 // vbao.glsl's sectors, evaluated from the shader's own SPIR-V (spirv_eval.hpp: the AO pass
 // with a test main(), folded by spirv-opt, the rest run on the CPU), against references the
 // test computes independently: the cosine-weighted cumulative by midpoint quadrature, the
-// sector masks of hand-worked wedges, and the whole hemisphere against DESIGN.md's closed
-// forms (floor and infinite wall, a 60-degree wall, a 90-degree groove, an open plane) with
-// exact horizons found analytically and an unbounded thickness (the back of every sample
-// at -V: the heightfield limit, where VBAO must agree with GTAO's integral).
+// sector masks of hand-worked wedges, and the whole hemisphere against the closed forms of
+// docs/design.md § Ground truth (floor and infinite wall, a 60-degree wall, a 90-degree
+// groove, an open plane) with exact horizons found analytically and an unbounded thickness
+// (the back of every sample at -V: the heightfield limit, where VBAO must agree with GTAO's
+// integral).
 //
 // The tolerance of the closed forms, 0.01: each slice's mask is exact but for its sector
 // boundaries, each rounded to the nearest of 32 equal-measure sectors, so a slice's visible
@@ -194,7 +195,7 @@ TEST_CASE("vbao sectors: a wedge's sectors follow the measure at every tilt", "[
     }
 }
 
-TEST_CASE("vbao sectors: DESIGN.md's closed forms from exact horizons and an unbounded thickness", "[vbao][glslang]")
+TEST_CASE("vbao sectors: docs/design.md's closed forms from exact horizons and an unbounded thickness", "[vbao][glslang]")
 {
     const dir3 up{0, 1, 0};
     const double alpha = pi / 3;

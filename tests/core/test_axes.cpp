@@ -42,7 +42,7 @@ TEST_CASE("axes: enum names round-trip, '-' reading as '_'", "[axes]")
     CHECK(std::string(aogen::to_name(aogen::pipeline_stage::fragment)) == "fragment");
     CHECK(std::string(aogen::to_name(aogen::projection_kind::orthographic)) == "orthographic");
 
-    // DESIGN.md writes "gbuffer-world".
+    // docs/design.md § Variant axes writes "gbuffer-world".
     CHECK(aogen::normal_source_from_name("gbuffer-world") == aogen::normal_source::gbuffer_world);
     CHECK(aogen::ssao_output_from_name("power-intensity") == aogen::ssao_output::power_intensity);
 }

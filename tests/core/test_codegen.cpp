@@ -329,12 +329,12 @@ TEST_CASE("codegen: the webgpu binding model separates textures and samplers, at
                       Catch::Contains("r8 is not a storage texture format of core WebGPU") && Catch::Contains("valid: rgba8, r32f, rgba16f"));
 }
 
-TEST_CASE("codegen: README's binding table is bindings.hpp's", "[codegen]")
+TEST_CASE("codegen: docs/bindings.md's binding table is bindings.hpp's", "[codegen]")
 {
-    std::ifstream in(AOGEN_SOURCE_DIR "/README.md");
+    std::ifstream in(AOGEN_SOURCE_DIR "/docs/bindings.md");
     REQUIRE(in);
-    const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    CHECK(readme.find(binding_table_markdown()) != std::string::npos);
+    const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(doc.find(binding_table_markdown()) != std::string::npos);
 }
 
 TEST_CASE("codegen: the fullscreen vertex shader is one text for every pass and variant", "[codegen]")

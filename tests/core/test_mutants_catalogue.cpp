@@ -1,6 +1,6 @@
-// The planted faults' catalogue (tests/mutants/mutants.json) as README § Planted faults shows
-// it: one row per mutant, in the catalogue's order, and the counts README states. A mutant
-// added without its row, or a row whose mutant is gone, fails here.
+// The planted faults' catalogue (tests/mutants/mutants.json) as docs/tests.md § Planted faults
+// shows it: one row per mutant, in the catalogue's order, and the counts docs/tests.md states.
+// A mutant added without its row, or a row whose mutant is gone, fails here.
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-TEST_CASE("mutants: README's table of planted faults is tests/mutants/mutants.json's", "[readme]")
+TEST_CASE("mutants: docs/tests.md's table of planted faults is tests/mutants/mutants.json's", "[docs]")
 {
     std::ifstream json_in(AOGEN_MUTANTS_FILE);
     REQUIRE(json_in);
@@ -24,17 +24,17 @@ TEST_CASE("mutants: README's table of planted faults is tests/mutants/mutants.js
         CHECK(!m.at("killed_by").empty());
     }
 
-    std::ifstream readme_in(AOGEN_SOURCE_DIR "/README.md");
-    REQUIRE(readme_in);
+    std::ifstream doc_in(AOGEN_SOURCE_DIR "/docs/tests.md");
+    REQUIRE(doc_in);
     std::stringstream text;
-    text << readme_in.rdbuf();
-    const std::string readme = text.str();
+    text << doc_in.rdbuf();
+    const std::string doc = text.str();
     std::vector<std::string> rows;
     const std::regex row("\\n\\| `([a-z0-9_]+)` \\| [^\\n]*\\| `[^\\n]*\\|");
-    const size_t table = readme.find("| mutant | planted in | the fault | killed by |");
+    const size_t table = doc.find("| mutant | planted in | the fault | killed by |");
     REQUIRE(table != std::string::npos);
-    const std::string after = readme.substr(table, readme.find("\n\n", table) - table);
+    const std::string after = doc.substr(table, doc.find("\n\n", table) - table);
     for (std::sregex_iterator i(after.begin(), after.end(), row), end; i != end; ++i) rows.push_back((*i)[1]);
     CHECK(rows == names);
-    CHECK(readme.find(std::to_string(names.size()) + " mutants, " + std::to_string(kill_tests) + " kill tests") != std::string::npos);
+    CHECK(doc.find(std::to_string(names.size()) + " mutants, " + std::to_string(kill_tests) + " kill tests") != std::string::npos);
 }

@@ -126,7 +126,7 @@ TEST_CASE("params: the point-cloud fallback's constants are seed 004's", "[param
     CHECK(aogen::point_cloud::ring_pixels == 3);
 }
 
-TEST_CASE("params: defaults validate and follow DESIGN.md, GTAO's strength and thickness tuned", "[params]")
+TEST_CASE("params: defaults validate and follow docs/design.md, GTAO's strength and thickness tuned", "[params]")
 {
     const aogen::ssao_params s;
     const aogen::gtao_params g;

@@ -51,7 +51,7 @@ TEST_CASE("presets: Taos GTAO holds seed 001's numbers", "[presets]")
     // Seed 001 has a hard cut-off and plain distances: no falloff, no thin-occluder term.
     CHECK(p.settings.gtao.falloff_range == 0.0f);
     CHECK(p.settings.gtao.thin_occluder == 0.0f);
-    // Slices × steps: DESIGN.md's default.
+    // Slices × steps: the variant's default (docs/design.md § Variant axes).
     CHECK(p.variant.gtao_slices == 2);
     CHECK(p.variant.gtao_steps == 3);
     // "the same separable bilateral / box-blur pipelines as SSAO"

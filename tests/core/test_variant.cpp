@@ -43,7 +43,7 @@ std::vector<variant> broad_set()
 
 } // namespace
 
-TEST_CASE("variant: the default's name is the one DESIGN.md spells", "[variant]")
+TEST_CASE("variant: the default's name is the one docs/design.md spells", "[variant]")
 {
     CHECK(to_name(variant{}) == "ssao-s16-half-bilateral-gbufworld-std-persp-cs");
     variant v;

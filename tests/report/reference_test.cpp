@@ -1,5 +1,5 @@
-// The report's reference image against a closed form at every pixel (DESIGN.md), R
-// unbounded unless told: every point of a 90° crease has AO (1 − cos 90°)/2 = 1/2 wherever
+// The report's reference image against a closed form at every pixel (docs/design.md
+// § Ground truth), R unbounded unless told: every point of a 90° crease has AO (1 − cos 90°)/2 = 1/2 wherever
 // it is (the other plane covers the same share of the hemisphere at any distance). The
 // built-in groove is the same configuration turned 45° — its walls are tilted planes, the
 // case where a tracer that occludes itself (float precision of large triangles) fails. The

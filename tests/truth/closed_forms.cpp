@@ -1,5 +1,5 @@
-// The reference tracer (truth) against DESIGN.md's closed forms, to within 0.005,
-// with its reported standard error below 0.005 too. Each configuration is traced where it
+// The reference tracer (truth) against the closed forms of docs/design.md § Ground truth, to
+// within 0.005, with its reported standard error below 0.005 too. Each configuration is traced where it
 // was drawn, at the world's zero, and moved 10⁶ and 10⁷ away from it (geometry and query
 // points), by a tracer whose origin, a camera's eye, is a few units from the configuration:
 // what a scene far from the world's zero hands the tracer.

@@ -13,7 +13,7 @@
 // front end and SPIR-V writer; the passes keep the WebGPU resources, which bound_chain binds
 // as separate sampled images and samplers. What it checks: the WGSL's meaning as naga reads
 // it — one WGSL front end, and the text a WebGPU engine loads — not Tint's code generation
-// (Dawn on this machine has no device that executes: see README § WebGPU).
+// (Dawn on this machine has no device that executes: see docs/webgpu.md § WebGPU).
 #pragma once
 
 #include <aogen/emitted.hpp>

@@ -4,8 +4,8 @@
 // WHAT
 //   floor_sources(v, kind) generates the compute shaders of one of v's floors: codegen::
 //   generate of v's compute twin (same axes, stage compute, no point-cloud fallback) with the
-//   templates whose work the floor drops replaced by report/floor/'s files (floor/README.md
-//   lists them and what each reads). Everything else — defines, bindings, the uniform block,
+//   templates whose work the floor drops replaced by report/floor/'s files
+//   (report/floor/README.md lists them and what each reads). Everything else — defines, bindings, the uniform block,
 //   depth and noise helpers, entry point, output image — is the variant's own, so a floor
 //   binds exactly like its variant (bound_chain, same chain_inputs) and runs on the same
 //   G-buffer in the same timing round.

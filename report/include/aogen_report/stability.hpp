@@ -28,7 +28,7 @@
 //   fix the noise tile to one rotation (noise_rotation: parallel or anti-parallel to a
 //   surface's normal).
 //
-//   builtin_case_names() lists the 31 built-in cases (DESIGN.md's extreme cases, and fields
+//   builtin_case_names() lists the 31 built-in cases (docs/design.md § Extreme cases, and fields
 //   of view from 0.1° to 175°, extreme aspect ratios, 1×1 and 8×8 images, D16/D24 depth,
 //   tiny and huge radii, geometry cut by the near plane, sub-millimetre geometry, the
 //   same scene at thirteen scales);

@@ -17,7 +17,7 @@
 //   camera::world_to_view()      look-at from eye/target/up (right-handed, looking down −z).
 //   camera::projection()         aogen::perspective()/orthographic() for the camera's depth
 //                                convention (aogen/math.hpp).
-//   builtin_scene(name)          DESIGN.md's closed-form configurations and a few more (crease,
+//   builtin_scene(name)          the closed forms of docs/design.md § Ground truth and a few more (crease,
 //                                groove, wall, sphere_on_plane, room, stairs, plank, far_floor),
 //                                meshes from assimp-testmodels (engine, teapots, terrain; atat,
 //                                dwarf, spider close and _far on a floor) and seed 004's point

@@ -13,7 +13,7 @@
 //                           recomputed in double on the primitive Embree found.
 //   scene::ao(p, n, opts)   AO(p) = (1/π) ∫ V_R(p, ω) (n·ω) dω over the hemisphere of n:
 //                           binary visibility of geometry within world radius R, cosine-
-//                           weighted, no falloff (DESIGN.md, "Ground truth and oracles");
+//                           weighted, no falloff (docs/design.md § Ground truth);
 //                           with the bent normal, the same rays' mean unoccluded direction.
 //   surface_offset(q, R)    how far ao() lifts its rays' origin off the surface by default.
 //   reliable_extent(R)      how far from the origin a point may be for that lift to be reliable.
