@@ -11,7 +11,7 @@ WHAT
     (b) every citation `<document> § <section>` (or `<document>'s § <section>`, the section
         free to run on to the next line) names a heading of that document, and in a Markdown
         file a bare `§ <section>` names one of the file's own headings. The rule: the cited
-        words, cut at the first ) ] ; , : " | or sentence end and stripped of backticks, and
+        words, cut at the first ( ) ] ; , : " | or sentence end and stripped of backticks, and
         a heading's text or its title (the text before a ':', ' (' or ' — '), likewise
         stripped, agree case-insensitively when one starts with the other at a word's end:
         "§ Temporal" names "Temporal accumulation", "§ GL runner says what each proves"
@@ -53,7 +53,7 @@ SECTION_RE = re.compile("(" + DOC + r")(?:'s)?\s*§\s*")
 BARE_SECTION_RE = re.compile(r"(?<![\w.§])§\s+(?=[`A-Za-z])")
 LINK_RE = re.compile(r"!?\[(?:[^\]\[]|\[[^\]]*\])*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 URL_RE = re.compile(r"\b(?:https?|ftp|file)://\S+")
-CUT_RE = re.compile(r"[)\];,:\"|]|\.(?:\s|$)")
+CUT_RE = re.compile(r"[()\];,:\"|]|\.(?:\s|$)")
 HEADING_RE = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 FENCE_RE = re.compile(r"^\s*(```|~~~)")
 SKIP_DIRS = {".git", "node_modules", "out"}
@@ -139,19 +139,18 @@ class Document:
         return bool(cited) and any(at_word_end(h, cited) or at_word_end(cited, h) for h in self.headings)
 
 
-class Checker:
-    def __init__(self, root, overlay=None):
+class Tree:
+    """The repository's files and texts, read once for every check run over them."""
+
+    def __init__(self, root):
         self.root = root
-        self.overlay = overlay or {}
-        self.paths = sorted(set(list_files(root)) | set(self.overlay))
-        self.present = set(self.paths)
+        self.paths = list_files(root)
         self.texts = {}
         self.docs = {}
-        self.errors = []
 
     def text(self, path):
         if path not in self.texts:
-            self.texts[path] = self.overlay[path] if path in self.overlay else read_text(self.root, path)
+            self.texts[path] = read_text(self.root, path)
         return self.texts[path]
 
     def document(self, path):
@@ -159,8 +158,31 @@ class Checker:
             self.docs[path] = Document(self.text(path) or "")
         return self.docs[path]
 
+
+class Checker:
+    def __init__(self, tree, overlay=None):
+        self.tree = tree
+        self.root = tree.root
+        self.overlay = overlay or {}
+        self.paths = sorted(set(tree.paths) | set(self.overlay))
+        self.present = set(self.paths)
+        self.docs = {}
+        self.errors = []
+
+    def text(self, path):
+        return self.overlay[path] if path in self.overlay else self.tree.text(path)
+
+    def document(self, path):
+        if path not in self.overlay:
+            return self.tree.document(path)
+        if path not in self.docs:
+            self.docs[path] = Document(self.overlay[path])
+        return self.docs[path]
+
     def fail(self, path, line, what):
-        self.errors.append(f"{path}:{line}: {what}")
+        error = f"{path}:{line}: {what}"
+        if error not in self.errors:  # a link's target is also a cited document: say it once
+            self.errors.append(error)
 
     def resolve(self, citing, cited):
         """The repository path a citation in `citing` names, or None when it holds none."""
@@ -244,9 +266,9 @@ class Checker:
         return self.errors
 
 
-def planted_faults(root):
+def planted_faults(tree):
     """(name, overlay, where the check must report it): one fault of each kind."""
-    base = Checker(root)
+    base = Checker(tree)
     readme = base.text("README.md") or ""
     cli = base.text("docs/cli.md") or ""
     cli_links = cli.count("\n") + 1
@@ -278,8 +300,9 @@ def planted_faults(root):
 def self_check(root):
     """Every planted fault must be reported where it was planted."""
     survived = []
-    for name, overlay, where in planted_faults(root):
-        errors = Checker(root, overlay).run()
+    tree = Tree(root)
+    for name, overlay, where in planted_faults(tree):
+        errors = Checker(tree, overlay).run()
         caught = [e for e in errors if e.startswith(where)]
         print(f"{'caught' if caught else 'SURVIVED'}: {name}" + (f" ({caught[0]})" if caught else f" (nothing at {where})"))
         if not caught:
@@ -297,7 +320,7 @@ def main(argv):
     root = os.path.abspath(argv[1])
     if len(argv) == 3:
         return self_check(root)
-    errors = Checker(root).run()
+    errors = Checker(Tree(root)).run()
     for e in errors:
         print(e)
     if errors:
