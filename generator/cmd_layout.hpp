@@ -35,7 +35,7 @@ struct layout_command {
         binding_option = sub->add_option("--binding", declaration.binding, "Binding / register of the declaration")->check(integer_in(0, 4294967295u));
         instance_option = sub->add_option("--instance", declaration.instance, "Block instance or variable name of the declaration")->check(declaration_name());
         sub->add_option("--out", out, "Write to this file instead of standard output")->check(not_empty("a file path, or - for standard output"));
-        sub->add_option("STRUCT.json", input, "The struct description (see docs/cli.md § Struct files)")->required();
+        sub->add_option("STRUCT.json", input, "The struct description (see docs/cli.md#struct-files)")->required();
         sub->callback([this] { run(); });
     }
 
