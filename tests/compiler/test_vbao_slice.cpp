@@ -25,6 +25,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_vbao_slice {
+
 using namespace aogen;
 
 namespace {
@@ -223,3 +227,5 @@ TEST_CASE("vbao sectors: DESIGN.md's closed forms from exact horizons and an unb
         CHECK(vbao_closed_form(c.n, c.V, c.open, c.slices) == Approx(c.exact).margin(c.margin));
     }
 }
+
+} // namespace unity_test_vbao_slice
