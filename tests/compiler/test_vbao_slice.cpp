@@ -36,7 +36,7 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 constexpr double half_pi = pi / 2;
 
-std::string num(double x) { return codegen::detail::glsl_float(static_cast<float>(x)); }
+std::string num(double x) { return aogen::glsl_float(static_cast<float>(x)); }
 
 std::vector<float> vbao_eval(const std::vector<std::string>& expressions)
 {
