@@ -94,7 +94,7 @@ private:
     {
         const ssao_params& s = p.settings.ssao;
         const std::string dir = std::string(p.name) + "/";
-        const auto samples = kernel::generate(kernel::distribution_from_name(s.kernel), p.variant.ssao_samples,
+        const auto samples = kernel::generate(kernel::distribution_from_name(s.kernel), p.variant.samples,
                                               s.kernel_seed, kernel::scale_law::crytek);
         add(dir + "params.json", ssao_json(p).dump(2) + "\n");
         add(dir + "kernel.json", vec4_array("kernel", samples, text_language::json));
@@ -102,7 +102,7 @@ private:
         add_noise(dir, s.noise_size, s.noise_seed);
         const bool seed004_block = p.variant.point_cloud_fallback; // the viewer keeps its own block
         for (const rules_output& o : uniform_outputs) {
-            const layout::block_desc block = seed004_block ? uniforms::pointcloud_block() : uniforms::ssao_block(p.variant.ssao_samples);
+            const layout::block_desc block = seed004_block ? uniforms::pointcloud_block() : uniforms::ssao_block(p.variant.samples);
             const std::vector<uint8_t> bytes =
                 seed004_block ? uniforms::pack_pointcloud(s, example_camera::get().proj, o.rules)
                               : uniforms::pack_ssao(s, example_camera::get(), samples,
@@ -119,7 +119,7 @@ private:
         j["name"] = p.name;
         j["gtao"] = {{"radius", json_float(g.radius)}, {"thickness_bias", json_float(g.thickness_bias)}, {"strength", json_float(g.strength)},
                      {"falloff_range", json_float(g.falloff_range)}, {"thin_occluder", json_float(g.thin_occluder)},
-                     {"slices", p.variant.gtao_slices}, {"steps", p.variant.gtao_steps}, {"half_resolution", p.variant.half_resolution},
+                     {"slices", p.variant.slices}, {"steps", p.variant.steps}, {"half_resolution", p.variant.half_resolution},
                      {"normals", to_name(p.variant.normals)}};
         j["blur"] = blur_json(p);
         add(dir + "params.json", j.dump(2) + "\n");
@@ -165,7 +165,7 @@ private:
         const variant& v = p.variant;
         nlohmann::ordered_json j;
         j["name"] = p.name;
-        j["ssao"] = {{"samples", v.ssao_samples}, {"radius", json_float(s.radius)}, {"bias", json_float(s.bias)}, {"output", to_name(v.output)},
+        j["ssao"] = {{"samples", v.samples}, {"radius", json_float(s.radius)}, {"bias", json_float(s.bias)}, {"output", to_name(v.output)},
                      {"strength", json_float(s.strength)}, {"power", json_float(s.power)}, {"intensity", json_float(s.intensity)},
                      {"range_check", to_name(v.range_check)}, {"kernel", s.kernel}, {"kernel_seed", s.kernel_seed},
                      {"noise_size", s.noise_size}, {"noise_seed", s.noise_seed},

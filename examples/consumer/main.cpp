@@ -15,13 +15,13 @@ int main()
 {
     const aogen::preset preset = aogen::presets::taos_ssao();
     const aogen::ssao_params& ssao = preset.settings.ssao;
-    const auto kernel = aogen::kernel::crytek(preset.variant.ssao_samples, ssao.kernel_seed);
+    const auto kernel = aogen::kernel::crytek(preset.variant.samples, ssao.kernel_seed);
     const auto noise = aogen::noise::encode(aogen::noise::rotations(4, ssao.noise_seed),
                                             aogen::noise::encoding::rgba8_unorm);
     const aogen::uniforms::camera camera{aogen::mat4{}, aogen::perspective(0.577f, 16.0f / 9.0f, 0.1f, 100.0f)};
     const auto bytes = aogen::uniforms::pack_ssao(ssao, camera, kernel, {960, 540},
                                                   aogen::layout::rules::std140);
-    const auto layout = aogen::layout::compute(aogen::uniforms::ssao_block(preset.variant.ssao_samples),
+    const auto layout = aogen::layout::compute(aogen::uniforms::ssao_block(preset.variant.samples),
                                                aogen::layout::rules::std140);
     std::printf("%s", aogen::layout::declare(layout, aogen::layout::language::glsl).c_str());
     std::printf("kernel: %zu samples, noise: %zu bytes, uniforms: %zu bytes\n", kernel.size(), noise.size(),

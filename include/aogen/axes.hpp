@@ -39,6 +39,7 @@
 #include "stages.hpp"
 
 #include <array>
+#include <cstddef>
 #include <string_view>
 
 namespace aogen {
@@ -51,15 +52,44 @@ inline constexpr std::array<enum_name<technique>, 4> technique_names{{
     {technique::sao, "sao"},   // scalable ambient obscurance (McGuire, Mara, Luebke 2012)
 }};
 
-// Whether technique `t` works in slices and steps per side (GTAO's horizons, VBAO's
-// bitmasks); SSAO counts kernel samples instead. The two share variant::gtao_slices and
-// variant::gtao_steps, their name token <S>x<N> and quality.hpp's presets.
-inline constexpr bool has_slices(technique t) { return t == technique::gtao || t == technique::vbao; }
+// What a technique counts per pixel: kernel samples or spiral taps (SSAO, SAO: the variant's
+// `samples`, name token s<N> -- the SSAO family, two estimators of the same screen-space
+// obscurance) or slices and steps per side (GTAO's horizons, VBAO's bitmasks: `slices` and
+// `steps`, token <S>x<N>, quality.hpp's presets). One row per technique, in technique_names'
+// order: a technique without its row does not compile. The rest of what a technique is lives
+// in its row of techniques.hpp's table, above the variant.
+enum class count_kind { samples, slices_and_steps };
+struct technique_counts_row {
+    technique value;
+    count_kind counts;
+    const char* unit; // what one count is called: "samples", "taps", "slices" (then steps)
+};
+inline constexpr std::array<technique_counts_row, technique_names.size()> technique_counts{{
+    {technique::ssao, count_kind::samples, "samples"},
+    {technique::gtao, count_kind::slices_and_steps, "slices"},
+    {technique::vbao, count_kind::slices_and_steps, "slices"},
+    {technique::sao, count_kind::samples, "taps"},
+}};
+namespace detail {
+constexpr bool technique_counts_complete()
+{
+    for (size_t i = 0; i < technique_counts.size(); ++i)
+        if (technique_counts[i].value != technique_names[i].value) return false;
+    return true;
+}
+} // namespace detail
+static_assert(detail::technique_counts_complete(), "technique_counts: one row per technique, in technique_names' order");
 
-// Whether technique `t` takes a number of samples per pixel: SSAO's kernel samples, SAO's
-// spiral taps. The two share variant::ssao_samples and its name token s<N> (the SSAO family:
-// two estimators of the same screen-space obscurance, hemisphere votes and the Alchemy sum).
-inline constexpr bool has_samples(technique t) { return t == technique::ssao || t == technique::sao; }
+// Whether technique `t` counts slices and steps per side, or samples (false for a value
+// outside the enumeration: validate() names it).
+inline constexpr bool has_slices(technique t)
+{
+    return size_t(t) < technique_counts.size() && technique_counts[size_t(t)].counts == count_kind::slices_and_steps;
+}
+inline constexpr bool has_samples(technique t)
+{
+    return size_t(t) < technique_counts.size() && technique_counts[size_t(t)].counts == count_kind::samples;
+}
 
 enum class pipeline_stage { compute, fragment };
 inline constexpr std::array<enum_name<pipeline_stage>, 2> pipeline_stage_names{{

@@ -21,6 +21,7 @@
 
 #include "kernel.hpp"
 #include "noise.hpp"
+#include "techniques.hpp"
 #include "temporal.hpp"
 #include "uniforms.hpp"
 #include "variant.hpp"
@@ -104,23 +105,16 @@ inline int output_scale(const variant& v)
 inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
 {
     constexpr layout::rules rules = layout::rules::std140;
-    const ssao_params& ssao = s.ssao;
+    const technique_desc& t = technique_of(v.tech);
     chain_inputs in;
-    in.noise_size = v.tech == technique::ssao ? ssao.noise_size : 4;
-    in.noise = noise::encode(noise::rotations(in.noise_size, ssao.noise_seed), noise::encoding::rgba32f);
+    in.noise_size = t.noise_size(s);
+    in.noise = noise::encode(noise::rotations(in.noise_size, s.ssao.noise_seed), noise::encoding::rgba32f);
     const vec2 tsize{float(target_w), float(target_h)};
     const uniforms::extras e{temporal::frame_rotation(v, s.frame, s.frame_sequence), s.finalize,
                             temporal::step_offset(s.frame_sequence, s.frame)};
-    for (pass_kind pass : passes(v)) {
-        if (pass != pass_kind::ao) in.uniforms.push_back(uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules, e));
-        else if (v.tech == technique::gtao) in.uniforms.push_back(uniforms::pack_gtao(s.gtao, s.camera, tsize, rules, in.noise_size, e));
-        else if (v.tech == technique::vbao) in.uniforms.push_back(uniforms::pack_vbao(s.vbao, s.camera, tsize, rules, in.noise_size, e));
-        else if (v.tech == technique::sao) in.uniforms.push_back(uniforms::pack_sao(s.sao, s.camera, v.ssao_samples, tsize, rules, in.noise_size, e));
-        else {
-            const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(ssao.kernel), v.ssao_samples, ssao.kernel_seed);
-            in.uniforms.push_back(uniforms::pack_ssao(ssao, s.camera, k, tsize, rules, e));
-        }
-    }
+    for (pass_kind pass : passes(v))
+        in.uniforms.push_back(pass == pass_kind::ao ? t.pack(v, s, s.camera, tsize, rules, e)
+                                                    : uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules, e));
     return in;
 }
 

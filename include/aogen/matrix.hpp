@@ -22,7 +22,7 @@
 //
 // USAGE
 //     aogen::variant_matrix m;                  // one value per axis: the default variant
-//     m.ssao_samples = {8, 16};
+//     m.samples = {8, 16};
 //     m.blur = {aogen::blur_mode::box, aogen::blur_mode::none};
 //     std::vector<aogen::variant> vs = aogen::expand(m);   // 4 variants
 #pragma once
@@ -41,9 +41,9 @@ namespace aogen {
 
 struct variant_matrix {
     std::vector<technique> techniques{technique::ssao};
-    std::vector<int> ssao_samples{16};
-    std::vector<int> gtao_slices{2};
-    std::vector<int> gtao_steps{3};
+    std::vector<int> samples{16};
+    std::vector<int> slices{2};
+    std::vector<int> steps{3};
     std::vector<blur_mode> blur{blur_mode::bilateral};
     std::vector<bilateral_depth> blur_depth{bilateral_depth::linear};
     std::vector<normal_source> normals{normal_source::gbuffer_world};
@@ -74,7 +74,7 @@ inline void append_unique(std::vector<variant>& out, const variant& v)
 inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40)
 {
     size_t product = 1;
-    for (size_t n : {m.techniques.size(), m.ssao_samples.size(), m.gtao_slices.size(), m.gtao_steps.size(), m.blur.size(), m.blur_depth.size(),
+    for (size_t n : {m.techniques.size(), m.samples.size(), m.slices.size(), m.steps.size(), m.blur.size(), m.blur_depth.size(),
                      m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
                      m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size(), m.multi_bounce.size(),
                      m.bent_normals.size()})
@@ -90,9 +90,9 @@ inline std::vector<variant> expand(const variant_matrix& m)
     std::set<std::string> seen; // canonical names: append_unique's test, in log time
     variant v;
     for (technique t : m.techniques)
-    for (int samples : m.ssao_samples)
-    for (int slices : m.gtao_slices)
-    for (int steps : m.gtao_steps)
+    for (int samples : m.samples)
+    for (int slices : m.slices)
+    for (int steps : m.steps)
     for (blur_mode blur : m.blur)
     for (bilateral_depth bd : m.blur_depth)
     for (normal_source n : m.normals)
@@ -108,7 +108,7 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (upsample_mode up : m.upsample)
     for (multi_bounce_mode mb : m.multi_bounce)
     for (bool bn : m.bent_normals) {
-        v.tech = t, v.ssao_samples = samples, v.gtao_slices = slices, v.gtao_steps = steps;
+        v.tech = t, v.samples = samples, v.slices = slices, v.steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
         v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up, v.multi_bounce = mb;
@@ -162,10 +162,10 @@ inline std::vector<variant> bent_normal_default_variants()
     m.blur = {blur_mode::denoise};
     std::vector<variant> out;
     for (int n : {2, 3, 4}) {
-        m.gtao_slices = {n}, m.gtao_steps = {n};
+        m.slices = {n}, m.steps = {n};
         for (const variant& v : expand(m)) append_unique(out, v);
     }
-    m.gtao_slices = {3}, m.gtao_steps = {3}, m.blur = {blur_mode::none}, m.half_resolution = {false};
+    m.slices = {3}, m.steps = {3}, m.blur = {blur_mode::none}, m.half_resolution = {false};
     for (const variant& v : expand(m)) append_unique(out, v);
     variant vbao = vbao_default_variants()[2]; // High: 3×3, half resolution, bilateral
     vbao.bent_normals = true;
@@ -177,13 +177,13 @@ inline std::vector<variant> default_matrix()
 {
     const std::vector<blur_mode> all_blurs{blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
     variant_matrix ssao;
-    ssao.ssao_samples = {8, 16, 32, 64};
+    ssao.samples = {8, 16, 32, 64};
     ssao.blur = all_blurs;
     ssao.half_resolution = {false, true};
     variant_matrix gtao;
     gtao.techniques = {technique::gtao};
-    gtao.gtao_slices = {1, 2, 3, 4, 8};
-    gtao.gtao_steps = {2, 3, 4};
+    gtao.slices = {1, 2, 3, 4, 8};
+    gtao.steps = {2, 3, 4};
     gtao.blur = all_blurs;
     std::vector<variant> out = expand(ssao);
     for (const variant& v : expand(gtao)) append_unique(out, v);
@@ -191,7 +191,7 @@ inline std::vector<variant> default_matrix()
     for (const variant& v : vbao_default_variants()) append_unique(out, v);
     variant_matrix sao; // after the others: they keep their order
     sao.techniques = {technique::sao};
-    sao.ssao_samples = {8, 16, 32};
+    sao.samples = {8, 16, 32};
     sao.blur = {blur_mode::bilateral, blur_mode::denoise};
     sao.half_resolution = {false, true};
     for (const variant& v : expand(sao)) append_unique(out, v);

@@ -83,11 +83,11 @@ constexpr bool same_name(std::string_view a, std::string_view b)
 
 // The names in table order: "a, b, c".
 template <class E, std::size_t N>
-std::string list(const std::array<enum_name<E>, N>& table)
+std::string list(const std::array<enum_name<E>, N>& table, std::string_view separator = ", ")
 {
     std::string out;
     for (const auto& entry : table) {
-        if (!out.empty()) out += ", ";
+        if (!out.empty()) out += separator;
         out += entry.name;
     }
     return out;

@@ -83,7 +83,7 @@ inline std::string field(std::string_view prefix, std::string_view name)
 // projected to the screen; a sample is occluded when the scene surface there is closer
 // to the camera than the sample by more than `bias`. Each vote is weighted by the range
 // check, summed to `occlusion`, and turned into the output. N, the range check and the
-// output form are the variant's (variant::ssao_samples, range_check, output).
+// output form are the variant's (variant::samples, range_check, output).
 //
 // The defaults of strength and radius_per_ao_radius are tuned: the values with the lowest
 // mean RMSE against ray-traced AO over eight SSAO variants of the default matrix (8 to 64

@@ -65,6 +65,7 @@
 #include "names.hpp"
 #include "params.hpp"
 #include "stages.hpp"
+#include "techniques.hpp"
 #include "uniforms.hpp"
 #include "variant.hpp"
 
@@ -185,24 +186,11 @@ inline void require_pass(const variant& v, pass_kind pass)
          "valid: " + valid);
 }
 
-// A float as a GLSL literal that reads back to the same float: the shortest round-trip
-// digits, with ".0" added when they would otherwise read as an int.
-inline std::string glsl_float(float value)
-{
-    std::string s = format_number(value);
-    if (s.find_first_of(".en") == std::string::npos) s += ".0";
-    return s;
-}
-
 // The parts of one shader, for a variant, pass, stage and options already validated.
 
 inline layout::block_desc uniform_block_of(const variant& v, pass_kind pass)
 {
-    if (pass != pass_kind::ao) return uniforms::blur_block();
-    if (v.tech == technique::gtao) return uniforms::gtao_block();
-    if (v.tech == technique::vbao) return uniforms::vbao_block();
-    if (v.tech == technique::sao) return uniforms::sao_block(v.ssao_samples);
-    return uniforms::ssao_block(v.ssao_samples); // the point-cloud fallback too
+    return pass == pass_kind::ao ? technique_of(v.tech).block(v) : uniforms::blur_block();
 }
 
 inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shader_stage stage, const options& o)
@@ -242,16 +230,7 @@ inline std::vector<std::string> template_files_of(const variant& v, pass_kind pa
     switch (pass) {
     case pass_kind::ao:
         files.insert(files.end(), {"common/normals.glsl", "common/noise.glsl"});
-        if (v.tech == technique::gtao) {
-            files.insert(files.end(), {"common/slices.glsl", "gtao.glsl"});
-        } else if (v.tech == technique::vbao) {
-            files.insert(files.end(), {"common/slices.glsl", "vbao.glsl"});
-        } else if (v.tech == technique::sao) {
-            files.push_back("sao.glsl");
-        } else {
-            if (v.point_cloud_fallback) files.push_back("ssao_point_cloud.glsl");
-            files.push_back("ssao.glsl");
-        }
+        for (std::string& f : technique_of(v.tech).files(v)) files.push_back(std::move(f));
         break;
     case pass_kind::blur_x:
     case pass_kind::blur_y: files.push_back("blur_bilateral.glsl"); break;
@@ -278,31 +257,42 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
             c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), glsl_float(blur_params::denoise_weights[i])});
     }
     if (pass == pass_kind::ao && has_prefilter_pass(v)) c.push_back({"AO_MIP_LEVEL_OFFSET", glsl_float(depth_mips::level_offset)});
-    if (pass == pass_kind::ao && has_slices(v.tech)) c.push_back({"AO_SLICE_TEXEL_CENTRE_PIXELS", glsl_float(slice_taps::texel_centre_pixels)});
-    if (pass == pass_kind::ao && v.tech == technique::ssao && v.decisions == ssao_decisions::smooth) {
-        c.push_back({"AO_SSAO_VOTE_BAND", glsl_float(ssao_bands::vote_per_radius)});
-        c.push_back({"AO_SSAO_SELF_BAND_PIXELS", glsl_float(ssao_bands::self_pixels)});
-        c.push_back({"AO_SSAO_EDGE_BAND_PIXELS", glsl_float(ssao_bands::edge_pixels)});
-        c.push_back({"AO_DEPTH_PLANE_BAND", glsl_float(ssao_bands::plane_per_spread)});
-        if (v.point_cloud_fallback) {
-            c.push_back({"AO_PC_SAME_BAND", glsl_float(ssao_bands::point_cloud_same_per_tolerance)});
-            c.push_back({"AO_PC_CAVITY_BAND", glsl_float(ssao_bands::point_cloud_cavity_per_threshold)});
-        }
-    }
-    if (pass == pass_kind::ao && v.tech == technique::sao) {
-        // SAO's taps fade at the screen's border and at silhouettes over SSAO's smooth bands.
-        c.push_back({"AO_SAO_EDGE_BAND_PIXELS", glsl_float(ssao_bands::edge_pixels)});
-        c.push_back({"AO_SAO_SELF_BAND_PIXELS", glsl_float(ssao_bands::self_pixels)});
-        c.push_back({"AO_DEPTH_PLANE_BAND", glsl_float(ssao_bands::plane_per_spread)});
-        c.push_back({"AO_SAO_EPSILON", glsl_float(sao_params::epsilon)});
-    }
-    if (pass == pass_kind::ao && v.tech == technique::ssao && v.point_cloud_fallback) {
-        c.push_back({"AO_PC_BACKGROUND_DEPTH", glsl_float(point_cloud::background_depth)});
-        c.push_back({"AO_PC_SAME_DEPTH", glsl_float(point_cloud::same_depth_tolerance)});
-        c.push_back({"AO_PC_CAVITY_THRESHOLD", glsl_float(point_cloud::cavity_threshold)});
-        c.push_back({"AO_PC_RING_PIXELS", std::to_string(point_cloud::ring_pixels)});
-    }
+    if (pass == pass_kind::ao)
+        for (define& d : technique_of(v.tech).constants(v)) c.push_back(std::move(d));
     return c;
+}
+
+
+// The #defines the templates read for one pass of `v` (a validated one: a plan's). Names are
+// AO_<AXIS>_<VALUE> for choices (exactly one of each group is defined) and AO_<AXIS> N for
+// counts; the AO pass's technique adds its own (its row's defines).
+inline std::vector<define> defines_of(const variant& v, pass_kind pass)
+{
+    std::vector<define> d;
+    auto count = [&d](const char* name, int value) { d.push_back({name, std::to_string(value)}); };
+
+    d.push_back(choice_define("STAGE", names::name_of(pipeline_stage_names, v.stage, "stage")));
+    if (v.stage == pipeline_stage::compute) {
+        const auto [wx, wy] = workgroup_of(v, pass);
+        count("AO_WORKGROUP_X", wx), count("AO_WORKGROUP_Y", wy);
+    }
+    d.push_back(choice_define("DEPTH", names::name_of(depth_convention_names, v.depth, "depth")));
+    d.push_back(choice_define("PROJECTION", names::name_of(projection_kind_names, v.projection, "projection")));
+    if (v.half_resolution) d.push_back({"AO_HALF_RESOLUTION", ""});
+    d.push_back(choice_define("PASS", names::name_of(pass_kind_names, pass, "pass")));
+    if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
+    if (pass == pass_kind::ao && v.deinterleaved) count("AO_DEINTERLEAVED_LAYERS", deinterleaved_layers);
+    if (applies_multi_bounce(v, pass)) d.push_back({"AO_MULTI_BOUNCE", ""}); // the finalize step of the last pass
+    if (v.bent_normals && pass != pass_kind::prefilter) d.push_back({"AO_BENT_NORMALS", ""}); // every pass that reads or writes AO
+    if (pass == pass_kind::ao) {
+        d.push_back(choice_define("TECHNIQUE", names::name_of(technique_names, v.tech, "technique")));
+        d.push_back(choice_define("NORMALS", names::name_of(normal_source_names, v.normals, "normals")));
+        if (v.fp16) d.push_back({"AO_FP16", ""});
+        for (define& t : technique_of(v.tech).defines(v)) d.push_back(std::move(t));
+    } else if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
+        d.push_back(choice_define("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth")));
+    }
+    return d;
 }
 
 } // namespace detail
@@ -402,7 +392,7 @@ inline plan make_plan(const variant& v, const options& o)
             s.name = p.name_ + "." + names::name_of(pass_kind_names, pass, "pass") + "." + file_extension(stage);
             s.files = detail::template_files_of(p.axes_, pass, stage);
             if (stage != shader_stage::vertex) {
-                s.defines = aogen::detail::defines_of(p.axes_, pass);
+                s.defines = detail::defines_of(p.axes_, pass);
                 s.resources = detail::resources_of(p.axes_, pass, stage, o);
                 s.constants = detail::constants_of(p.axes_, pass);
                 s.block = detail::uniform_block_of(p.axes_, pass);
@@ -413,3 +403,15 @@ inline plan make_plan(const variant& v, const options& o)
 }
 
 } // namespace aogen::codegen
+
+namespace aogen {
+
+// The #defines the templates read for one pass of `v` (codegen::detail::defines_of, after
+// validating `v`).
+inline std::vector<define> defines(const variant& v, pass_kind pass)
+{
+    validate(v);
+    return codegen::detail::defines_of(v, pass);
+}
+
+} // namespace aogen

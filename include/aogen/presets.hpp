@@ -77,7 +77,7 @@ inline variant seed_engine_variant(technique t)
 inline preset taos_ssao()
 {
     preset p{"taos_ssao", seed_engine_variant(technique::ssao), {}};
-    p.variant.ssao_samples = 16;
+    p.variant.samples = 16;
     p.variant.half_resolution = true;
     p.variant.normals = normal_source::gbuffer_world;
     p.variant.range_check = ssao_range_check::taos;
@@ -101,8 +101,8 @@ inline preset taos_ssao()
 inline preset taos_gtao()
 {
     preset p{"taos_gtao", seed_engine_variant(technique::gtao), {}};
-    p.variant.gtao_slices = 2;  // ours (the variant's default)
-    p.variant.gtao_steps = 3;   // ours (the variant's default)
+    p.variant.slices = 2;  // ours (the variant's default)
+    p.variant.steps = 3;   // ours (the variant's default)
     p.variant.half_resolution = true;
     p.variant.normals = normal_source::gbuffer_world;
     p.variant.blur = blur_mode::bilateral;
@@ -125,7 +125,7 @@ inline preset taos_gtao()
 inline preset unique_engine_ssao()
 {
     preset p{"unique_engine_ssao", seed_engine_variant(technique::ssao), {}};
-    p.variant.ssao_samples = 32;
+    p.variant.samples = 32;
     p.variant.half_resolution = true;                    // ours
     p.variant.normals = normal_source::gbuffer_view;
     p.variant.range_check = ssao_range_check::taos;      // ours
@@ -151,7 +151,7 @@ inline preset unique_engine_ssao()
 inline preset pointcloud_viewer_ssao()
 {
     preset p{"pointcloud_viewer_ssao", seed_engine_variant(technique::ssao), {}};
-    p.variant.ssao_samples = 64;
+    p.variant.samples = 64;
     p.variant.half_resolution = false;
     p.variant.normals = normal_source::reconstructed;
     p.variant.point_cloud_fallback = true;

@@ -58,7 +58,7 @@ inline void apply_quality(variant& v, const quality_preset& p)
     if (!has_slices(v.tech))
         fail("quality", quote(std::string(p.name)) + " sets slices and steps, and the variant is " + names::name_of(technique_names, v.tech, "technique"),
              "valid: technique gtao or vbao");
-    v.gtao_slices = p.slices, v.gtao_steps = p.steps;
+    v.slices = p.slices, v.steps = p.steps;
 }
 
 // The preset whose counts `v` has, or "" (SSAO, or counts no preset has).
@@ -66,7 +66,7 @@ inline std::string quality_name_of(const variant& v)
 {
     if (!has_slices(v.tech)) return "";
     for (const quality_preset& p : quality_presets)
-        if (v.gtao_slices == p.slices && v.gtao_steps == p.steps) return p.name;
+        if (v.slices == p.slices && v.steps == p.steps) return p.name;
     return "";
 }
 

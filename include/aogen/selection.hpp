@@ -20,6 +20,7 @@
 //   axis value left a feature out.
 #pragma once
 
+#include "techniques.hpp"
 #include "variant.hpp"
 
 #include <string>
@@ -70,9 +71,7 @@ inline feature_list features(const variant& v, const scene_needs* scene = nullpt
     feature_list f;
     const bool ssao = v.tech == technique::ssao;
     const std::string tech = names::name_of(technique_names, v.tech, "technique");
-    f.compiled.push_back(ssao           ? "ssao: " + std::to_string(v.ssao_samples) + " samples"
-                         : has_samples(v.tech) ? tech + ": " + std::to_string(v.ssao_samples) + " spiral taps"
-                                               : tech + ": " + std::to_string(v.gtao_slices) + " slices x " + std::to_string(v.gtao_steps) + " steps");
+    f.compiled.push_back(technique_of(v.tech).counts_text(v));
     const std::string no_pc = scene ? "the scene has no point clouds" : "not requested (variant without -pc)";
     if (ssao) detail::feature(f, v.point_cloud_fallback, "point-cloud fallback", no_pc);
     else f.left_out.push_back({"point-cloud fallback", "an SSAO feature; this variant is " + tech});

@@ -62,6 +62,7 @@
 #include "names.hpp"
 #include "random.hpp"
 #include "range.hpp"
+#include "techniques.hpp"
 #include "variant.hpp"
 
 #include <array>
@@ -143,12 +144,10 @@ inline float step_offset(sequence s, uint32_t frame)
     names::fail_unlisted(sequence_names, s, "frame sequence");
 }
 
-// The angle, in turns, after which `v`'s samples repeat: 1/(2·slices) for GTAO and VBAO
-// (slices at s·π/slices), a whole turn for SSAO's kernel and SAO's spiral.
-inline double period_turns(const variant& v)
-{
-    return has_slices(v.tech) ? 1.0 / (2.0 * double(v.gtao_slices)) : 1.0;
-}
+// The angle, in turns, after which `v`'s samples repeat: its technique's (techniques.hpp):
+// 1/(2·slices) for GTAO and VBAO (slices at s·π/slices), a whole turn for SSAO's kernel and
+// SAO's spiral.
+inline double period_turns(const variant& v) { return technique_of(v.tech).period_turns(v); }
 
 // The rotation (cos, sin) frame `frame` adds to every pixel's noise rotation in `v`'s AO
 // pass; exactly (1, 0) at frame 0.

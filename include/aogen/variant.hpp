@@ -26,7 +26,7 @@
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
-//     v.ssao_samples = 32;
+//     v.samples = 32;
 //     std::string name = aogen::to_name(v);      // "ssao-s32-half-bilateral-gbufworld-std-persp-cs"
 //     aogen::variant w = aogen::variant_from_name(name);   // == v
 //     aogen::validate(v);                        // throws aogen::error naming the axis
@@ -59,14 +59,14 @@ struct variant {
     technique tech = technique::ssao;
     // SSAO's kernel samples per pixel, N. Taos: 16, Unique Engine: 32, ssao.wgsl: 64.
     // SAO's spiral taps per pixel (has_samples: the same field and name token).
-    static constexpr int_range ssao_samples_range{1, 256};
-    int ssao_samples = 16;
+    static constexpr int_range samples_range{1, 256};
+    int samples = 16;
     // GTAO's and VBAO's (has_slices) slice directions per pixel, rotated per pixel by noise,
     // and horizon samples per side of each slice. Defaults: 2 and 3.
-    static constexpr int_range gtao_slices_range{1, 16};
-    int gtao_slices = 2;
-    static constexpr int_range gtao_steps_range{1, 16};
-    int gtao_steps = 3;
+    static constexpr int_range slices_range{1, 16};
+    int slices = 2;
+    static constexpr int_range steps_range{1, 16};
+    int steps = 3;
     blur_mode blur = blur_mode::bilateral;
     bilateral_depth blur_depth = bilateral_depth::linear; // bilateral only
     normal_source normals = normal_source::gbuffer_world;
@@ -140,9 +140,13 @@ inline void validate(const variant& v)
 {
     ++detail::validations();
     names::require_listed(technique_names, v.tech, "technique");
-    require_in("ssao samples", v.ssao_samples, variant::ssao_samples_range);
-    require_in("gtao slices", v.gtao_slices, variant::gtao_slices_range);
-    require_in("gtao steps", v.gtao_steps, variant::gtao_steps_range);
+    // The counts are named for the technique that reads them ("vbao slices", "sao taps"); a
+    // count the technique does not read is still checked, under its bare name.
+    const std::string tech = names::name_of(technique_names, v.tech, "technique");
+    const std::string sampled = has_samples(v.tech) ? tech + " " + technique_counts[size_t(v.tech)].unit : "samples";
+    require_in(sampled, v.samples, variant::samples_range);
+    require_in(has_slices(v.tech) ? tech + " slices" : "slices", v.slices, variant::slices_range);
+    require_in(has_slices(v.tech) ? tech + " steps" : "steps", v.steps, variant::steps_range);
     names::require_listed(blur_mode_names, v.blur, "blur");
     names::require_listed(bilateral_depth_names, v.blur_depth, "bilateral depth");
     names::require_listed(normal_source_names, v.normals, "normals");
@@ -264,66 +268,8 @@ struct define {
     std::string value; // empty: a plain #define NAME
 };
 
-// The #defines the templates read for one pass of `v`. Names are AO_<AXIS>_<VALUE> for
-// choices (exactly one of each group is defined) and AO_<AXIS> N for counts.
-namespace detail {
-
-// defines(v, pass) for a `v` already validated (a plan's).
-inline std::vector<define> defines_of(const variant& v, pass_kind pass)
-{
-    std::vector<define> d;
-    auto choice = [&d](const char* axis, const char* value) {
-        std::string name = std::string("AO_") + axis + "_";
-        for (const char* c = value; *c; ++c) name += static_cast<char>(*c >= 'a' && *c <= 'z' ? *c - 'a' + 'A' : *c);
-        d.push_back({name, ""});
-    };
-    auto count = [&d](const char* name, int value) { d.push_back({name, std::to_string(value)}); };
-
-    choice("STAGE", names::name_of(pipeline_stage_names, v.stage, "stage"));
-    if (v.stage == pipeline_stage::compute) {
-        const auto [wx, wy] = workgroup_of(v, pass);
-        count("AO_WORKGROUP_X", wx), count("AO_WORKGROUP_Y", wy);
-    }
-    choice("DEPTH", names::name_of(depth_convention_names, v.depth, "depth"));
-    choice("PROJECTION", names::name_of(projection_kind_names, v.projection, "projection"));
-    if (v.half_resolution) d.push_back({"AO_HALF_RESOLUTION", ""});
-    choice("PASS", names::name_of(pass_kind_names, pass, "pass"));
-    if ((pass == pass_kind::ao || pass == pass_kind::prefilter) && has_prefilter_pass(v)) count("AO_MIP_LEVELS", v.depth_mips);
-    if (pass == pass_kind::ao && v.deinterleaved) count("AO_DEINTERLEAVED_LAYERS", deinterleaved_layers);
-    if (applies_multi_bounce(v, pass)) d.push_back({"AO_MULTI_BOUNCE", ""}); // the finalize step of the last pass
-    if (v.bent_normals && pass != pass_kind::prefilter) d.push_back({"AO_BENT_NORMALS", ""}); // every pass that reads or writes AO
-    if (pass == pass_kind::ao) {
-        choice("TECHNIQUE", names::name_of(technique_names, v.tech, "technique"));
-        choice("NORMALS", names::name_of(normal_source_names, v.normals, "normals"));
-        if (v.fp16) d.push_back({"AO_FP16", ""});
-        if (v.tech == technique::ssao) {
-            count("AO_SSAO_SAMPLES", v.ssao_samples);
-            choice("RANGE_CHECK", names::name_of(ssao_range_check_names, v.range_check, "range check"));
-            choice("OUTPUT", names::name_of(ssao_output_names, v.output, "output"));
-            choice("SSAO_DECISIONS", names::name_of(ssao_decisions_names, v.decisions, "decisions"));
-            if (v.point_cloud_fallback) d.push_back({"AO_POINT_CLOUD_FALLBACK", ""});
-        } else if (v.tech == technique::sao) {
-            count("AO_SAO_SAMPLES", v.ssao_samples);
-        } else if (v.tech == technique::gtao) {
-            count("AO_GTAO_SLICES", v.gtao_slices);
-            count("AO_GTAO_STEPS", v.gtao_steps);
-        } else {
-            count("AO_VBAO_SLICES", v.gtao_slices);
-            count("AO_VBAO_STEPS", v.gtao_steps);
-        }
-    } else if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
-        choice("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth"));
-    }
-    return d;
-}
-
-} // namespace detail
-
-inline std::vector<define> defines(const variant& v, pass_kind pass)
-{
-    validate(v);
-    return detail::defines_of(v, pass);
-}
+// The #defines of a pass (aogen::defines) are plan.hpp's: a technique's come from its row of the
+// table (techniques.hpp), which stands above this header.
 
 // ---------------------------------------------------------------------------------
 // Canonical form, name, hash
@@ -335,12 +281,12 @@ inline std::vector<define> defines(const variant& v, pass_kind pass)
 inline variant canonical(variant v)
 {
     const variant d;
-    if (!has_samples(v.tech)) v.ssao_samples = d.ssao_samples;
+    if (!has_samples(v.tech)) v.samples = d.samples;
     if (v.tech != technique::ssao) {
         v.range_check = d.range_check, v.output = d.output, v.decisions = d.decisions;
         v.point_cloud_fallback = d.point_cloud_fallback;
     }
-    if (!has_slices(v.tech)) v.gtao_slices = d.gtao_slices, v.gtao_steps = d.gtao_steps;
+    if (!has_slices(v.tech)) v.slices = d.slices, v.steps = d.steps;
     if (v.blur != blur_mode::bilateral) v.blur_depth = d.blur_depth;
     if (v.stage != pipeline_stage::compute) v.workgroup_x = d.workgroup_x, v.workgroup_y = d.workgroup_y, v.deinterleaved = d.deinterleaved;
     if (!v.half_resolution) v.upsample = d.upsample;
@@ -350,8 +296,8 @@ inline variant canonical(variant v)
 inline bool operator==(const variant& a, const variant& b)
 {
     const variant x = canonical(a), y = canonical(b);
-    return x.tech == y.tech && x.ssao_samples == y.ssao_samples && x.gtao_slices == y.gtao_slices &&
-           x.gtao_steps == y.gtao_steps && x.blur == y.blur && x.blur_depth == y.blur_depth && x.normals == y.normals &&
+    return x.tech == y.tech && x.samples == y.samples && x.slices == y.slices &&
+           x.steps == y.steps && x.blur == y.blur && x.blur_depth == y.blur_depth && x.normals == y.normals &&
            x.point_cloud_fallback == y.point_cloud_fallback && x.depth == y.depth && x.projection == y.projection &&
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
            x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.decisions == y.decisions && x.fp16 == y.fp16 &&
@@ -376,6 +322,18 @@ inline constexpr std::array<enum_name<projection_kind>, 2> projection_tokens{{
     {projection_kind::perspective, "persp"}, {projection_kind::orthographic, "ortho"}}};
 inline constexpr std::array<enum_name<pipeline_stage>, 2> stage_tokens{{
     {pipeline_stage::compute, "cs"}, {pipeline_stage::fragment, "fs"}}};
+
+// The extras of a variant name, in the order a canonical name writes them (name_of); what
+// variant_from_name accepts after the eight fixed tokens, and what `aogen list` shows.
+inline constexpr std::array<const char*, 13> extra_tokens{
+    {"rawdepth", "pc", "rc004", "powint", "step", "fp16", "nearest", "mip<N>", "deint", "bn", "mb", "mbg", "wg<X>x<Y>"}};
+
+inline std::string extra_token_list()
+{
+    std::string out;
+    for (const char* t : extra_tokens) out += (out.empty() ? "" : ", ") + std::string(t);
+    return out;
+}
 
 inline std::vector<std::string> split(const std::string& s, char separator)
 {
@@ -409,8 +367,8 @@ inline std::string name_of(const variant& input)
     const variant v = canonical(input);
     const variant d;
     std::string name = names::name_of(technique_names, v.tech, "technique");
-    if (has_samples(v.tech)) name += "-s" + std::to_string(v.ssao_samples);
-    else name += "-" + std::to_string(v.gtao_slices) + "x" + std::to_string(v.gtao_steps);
+    if (has_samples(v.tech)) name += "-s" + std::to_string(v.samples);
+    else name += "-" + std::to_string(v.slices) + "x" + std::to_string(v.steps);
     name += v.half_resolution ? "-half" : "-full";
     name += std::string("-") + names::name_of(detail::blur_tokens, v.blur, "blur");
     name += std::string("-") + names::name_of(detail::normal_tokens, v.normals, "normals");
@@ -455,11 +413,11 @@ inline variant variant_from_name(const std::string& name)
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");
     if (has_samples(v.tech)) {
-        if (t[1].size() < 2 || t[1][0] != 's' || (v.ssao_samples = detail::parse_count(t[1], 1)) < 0)
+        if (t[1].size() < 2 || t[1][0] != 's' || (v.samples = detail::parse_count(t[1], 1)) < 0)
             fail(subject, quote(t[1]) + " is not a sample count", "valid: s1..s256");
     } else {
         const std::vector<std::string> ss = detail::split(t[1], 'x');
-        if (ss.size() != 2 || (v.gtao_slices = detail::parse_count(ss[0])) < 0 || (v.gtao_steps = detail::parse_count(ss[1])) < 0)
+        if (ss.size() != 2 || (v.slices = detail::parse_count(ss[0])) < 0 || (v.steps = detail::parse_count(ss[1])) < 0)
             fail(subject, quote(t[1]) + " is not slices x steps", "valid: e.g. 2x3, each 1..16");
     }
     if (t[2] != "half" && t[2] != "full") fail(subject + " resolution", quote(t[2]) + " is not a resolution", "valid: half, full");
@@ -496,7 +454,7 @@ inline variant variant_from_name(const std::string& name)
             const std::vector<std::string> wg = detail::split(x.substr(2), 'x');
             if (wg.size() != 2 || (v.workgroup_x = detail::parse_count(wg[0])) < 0 || (v.workgroup_y = detail::parse_count(wg[1])) < 0)
                 fail(subject, quote(x) + " is not a workgroup size", "valid: wg<X>x<Y>, e.g. wg16x16");
-        } else fail(subject, quote(x) + " is not a known extra", "valid: rawdepth, pc, rc004, powint, step, fp16, nearest, mip<N>, deint, bn, mb, mbg, wg<X>x<Y>");
+        } else fail(subject, quote(x) + " is not a known extra", "valid: " + detail::extra_token_list());
     }
     try {
         validate(v);

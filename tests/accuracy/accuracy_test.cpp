@@ -25,6 +25,10 @@
 #include <iostream>
 #include <map>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_accuracy_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -239,3 +243,5 @@ TEST_CASE("accuracy: sao reads the floor to the horizon as open, every pixel")
                           "sao-s16-half-denoise-recon-std-persp-cs", "sao-s16-full-noblur-gbufworld-std-persp-cs-mip5"})
         check_open_floor(v);
 }
+
+} // namespace unity_accuracy_test

@@ -18,6 +18,10 @@
 
 #include <iostream>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_bent_normal_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -103,3 +107,5 @@ TEST_CASE("accuracy: bent normals: vbao-3x3-half-bilateral-bn is within 10 degre
 {
     check_bent_normals("vbao-3x3-half-bilateral-gbufworld-std-persp-cs-bn");
 }
+
+} // namespace unity_bent_normal_test

@@ -19,6 +19,10 @@
 #include <cmath>
 #include <iostream>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_temporal_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -97,3 +101,5 @@ TEST_CASE("accuracy: temporal: van der Corput's 8 frames leave less noise than w
     CHECK(all_noise[0] < all_noise[1]);
     require_clean(*ctx);
 }
+
+} // namespace unity_temporal_test

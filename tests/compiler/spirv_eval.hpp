@@ -245,7 +245,7 @@ inline std::vector<float> run_main(const std::vector<uint32_t>& words, size_t co
 // `x` as a GLSL float literal (rounded to float first): what the test expressions are built of.
 inline std::string glsl_literal(double x)
 {
-    return aogen::codegen::detail::glsl_float(static_cast<float>(x));
+    return aogen::glsl_float(static_cast<float>(x));
 }
 
 // Each GLSL float expression evaluated with the AO pass of `v` (its templates up to and

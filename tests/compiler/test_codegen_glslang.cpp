@@ -25,6 +25,10 @@
 #include <set>
 #include <tuple>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_codegen_glslang {
+
 using namespace aogen;
 using aogen::codegen::resource_kind;
 using aogen::codegen::shader_source;
@@ -222,7 +226,7 @@ size_t line_count(const std::string& text)
 TEST_CASE("codegen+glslang: SSAO samples 8/16/32/64 x blur x full/half", "[codegen][glslang]")
 {
     variant_matrix m;
-    m.ssao_samples = {8, 16, 32, 64};
+    m.samples = {8, 16, 32, 64};
     m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::none};
     m.half_resolution = {false, true};
     check_all(expand(m), 24);
@@ -232,8 +236,8 @@ TEST_CASE("codegen+glslang: GTAO slices 1/2/3/4/8 x steps 2/3/4 x blur", "[codeg
 {
     variant_matrix m;
     m.techniques = {technique::gtao};
-    m.gtao_slices = {1, 2, 3, 4, 8};
-    m.gtao_steps = {2, 3, 4};
+    m.slices = {1, 2, 3, 4, 8};
+    m.steps = {2, 3, 4};
     m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::none};
     check_all(expand(m), 45);
 }
@@ -285,8 +289,8 @@ TEST_CASE("codegen+glslang: VBAO, every choice axis crossed, fp16 too, and its e
     for (auto [slices, steps] : {std::pair{1, 1}, {1, 16}, {16, 1}, {16, 16}, {9, 3}}) {
         variant v;
         v.tech = technique::vbao;
-        v.gtao_slices = slices;
-        v.gtao_steps = steps;
+        v.slices = slices;
+        v.steps = steps;
         v.blur = blur_mode::none;
         edges.push_back(v);
     }
@@ -299,7 +303,7 @@ TEST_CASE("codegen+glslang: edge counts and workgroup sizes", "[codegen][glslang
     for (int samples : {1, 2, 255, 256})
         for (bool half : {false, true}) {
             variant v;
-            v.ssao_samples = samples;
+            v.samples = samples;
             v.half_resolution = half;
             v.blur = blur_mode::none;
             vs.push_back(v);
@@ -307,8 +311,8 @@ TEST_CASE("codegen+glslang: edge counts and workgroup sizes", "[codegen][glslang
     for (auto [slices, steps] : {std::pair{1, 1}, {1, 16}, {16, 1}, {16, 16}}) {
         variant v;
         v.tech = technique::gtao;
-        v.gtao_slices = slices;
-        v.gtao_steps = steps;
+        v.slices = slices;
+        v.steps = steps;
         v.blur = blur_mode::none;
         vs.push_back(v);
     }
@@ -320,7 +324,7 @@ TEST_CASE("codegen+glslang: edge counts and workgroup sizes", "[codegen][glslang
     }
     {
         variant v; // seed 004 as a compute variant at 256 samples
-        v.ssao_samples = 256;
+        v.samples = 256;
         v.point_cloud_fallback = true;
         v.normals = normal_source::reconstructed;
         v.range_check = ssao_range_check::seed004;
@@ -449,3 +453,5 @@ TEST_CASE("codegen+glslang: a template directory with the same files gives the s
     }
     fs::remove_all(dir);
 }
+
+} // namespace unity_test_codegen_glslang

@@ -15,6 +15,10 @@
 #include <string_view>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_codegen_output_format {
+
 using aogen::codegen::shader_source;
 using aogen::shader_stage;
 namespace codegen = aogen::codegen;
@@ -163,3 +167,5 @@ TEST_CASE("codegen+compile: rgba8 compute variants compile to ESSL 310, which gl
         }
     }
 }
+
+} // namespace unity_test_codegen_output_format

@@ -37,6 +37,10 @@
 #include <thread>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_compile {
+
 namespace cc = aogen::compile;
 using aogen_test::error_of;
 using Catch::Contains;
@@ -760,3 +764,5 @@ TEST_CASE("compile: SPIRV-Cross errors name the target", "[compile]")
     CHECK(error_of([] { cc::cross_compile({}, cc::shader_stage::compute, cc::target::spv, "s"); }) ==
           "s: target spv has no text (valid: the SPIR-V words themselves)");
 }
+
+} // namespace unity_test_compile

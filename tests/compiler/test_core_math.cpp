@@ -14,6 +14,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_core_math {
+
 using namespace aogen;
 
 namespace {
@@ -85,3 +89,5 @@ TEST_CASE("compiler: ao_lerp is a + (b - a) t: the ends exactly, the middle")
     CHECK(got[2] == 3.0f);
     CHECK(got[3] == 0.5f);
 }
+
+} // namespace unity_test_core_math

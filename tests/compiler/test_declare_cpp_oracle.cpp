@@ -26,6 +26,10 @@
 #include <sstream>
 #include <unistd.h>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_declare_cpp_oracle {
+
 using namespace aogen::layout;
 
 namespace {
@@ -114,3 +118,5 @@ TEST_CASE("C++ compiler oracle: declare(language::cpp) compiles and its static_a
     CHECK(status == 0);
     if (status == 0) std::filesystem::remove_all(dir); // kept for inspection when it fails
 }
+
+} // namespace unity_test_declare_cpp_oracle

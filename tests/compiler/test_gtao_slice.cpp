@@ -31,6 +31,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_gtao_slice {
+
 using namespace aogen;
 
 namespace {
@@ -266,3 +270,5 @@ TEST_CASE("gtao slice steps: frame 0's steps at j / N of the radius, later frame
         CHECK(got[i] == Approx(cases[i].pixels).margin(1e-5));
     }
 }
+
+} // namespace unity_test_gtao_slice

@@ -33,6 +33,10 @@
 #include <map>
 #include <set>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_layout_glsl_oracle {
+
 using namespace aogen::layout;
 
 namespace {
@@ -168,3 +172,5 @@ TEST_CASE("random struct generator covers what the oracles need", "[layout][orac
     CHECK(two_levels >= 30);
     CHECK(runtime >= 30);
 }
+
+} // namespace unity_test_layout_glsl_oracle

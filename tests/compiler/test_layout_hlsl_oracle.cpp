@@ -31,6 +31,10 @@
 
 #include <catch2/catch.hpp>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_layout_hlsl_oracle {
+
 using namespace aogen::layout;
 
 namespace {
@@ -112,3 +116,5 @@ TEST_CASE("glslang HLSL oracle: matrices start a register and take one per colum
         CHECK(l.members[2].offset == (t.rows < 4 ? dxc_after : m.offset + 16u * t.columns));
     }
 }
+
+} // namespace unity_test_layout_hlsl_oracle

@@ -40,6 +40,10 @@
 #include <set>
 #include <sstream>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_layout_msl_oracle {
+
 using namespace aogen::layout;
 
 namespace {
@@ -373,3 +377,5 @@ TEST_CASE("SPIRV-Cross MSL oracle: where packed_float3 appears (statistics)", "[
             out << "3-vector followed by " << next.first << ": " << outcome.first << " x" << outcome.second << "\n";
     WARN(out.str());
 }
+
+} // namespace unity_test_layout_msl_oracle

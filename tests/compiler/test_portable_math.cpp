@@ -19,6 +19,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_portable_math {
+
 using namespace aogen;
 
 namespace {
@@ -73,3 +77,5 @@ TEST_CASE("portable math: the scan finds acos, atan and mix where a shader calls
     std::sort(calls.begin(), calls.end());
     CHECK(calls == std::vector<std::string>{"Acos", "Atan", "Atan2", "FMix"});
 }
+
+} // namespace unity_test_portable_math

@@ -30,6 +30,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_ssao_decisions {
+
 using namespace aogen;
 
 namespace {
@@ -242,3 +246,5 @@ TEST_CASE("ssao decisions: the point-cloud fallback's tests move by at most 1/25
     CHECK(largest_step(step[0]) == 1.0f);
     CHECK(largest_step(step[1]) == 1.0f);
 }
+
+} // namespace unity_test_ssao_decisions

@@ -26,6 +26,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_vbao_slice {
+
 using namespace aogen;
 
 namespace {
@@ -33,7 +37,7 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 constexpr double half_pi = pi / 2;
 
-std::string num(double x) { return codegen::detail::glsl_float(static_cast<float>(x)); }
+std::string num(double x) { return aogen::glsl_float(static_cast<float>(x)); }
 
 std::vector<float> vbao_eval(const std::vector<std::string>& expressions)
 {
@@ -224,3 +228,5 @@ TEST_CASE("vbao sectors: docs/design.md's closed forms from exact horizons and a
         CHECK(vbao_closed_form(c.n, c.V, c.open, c.slices) == Approx(c.exact).margin(c.margin));
     }
 }
+
+} // namespace unity_test_vbao_slice

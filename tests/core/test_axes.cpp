@@ -11,6 +11,10 @@
 #include <limits>
 #include <string>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_axes {
+
 using Catch::Contains;
 using aogen_test::error_of;
 
@@ -92,9 +96,9 @@ TEST_CASE("axes: a variant holding an enum value outside its list is an error na
 TEST_CASE("axes: a variant's counts are bounded by the ranges beside them", "[axes]")
 {
     using aogen::variant;
-    CHECK(aogen::to_string(variant::ssao_samples_range) == "1..256");
-    CHECK(aogen::to_string(variant::gtao_slices_range) == "1..16");
-    CHECK(aogen::to_string(variant::gtao_steps_range) == "1..16");
+    CHECK(aogen::to_string(variant::samples_range) == "1..256");
+    CHECK(aogen::to_string(variant::slices_range) == "1..16");
+    CHECK(aogen::to_string(variant::steps_range) == "1..16");
     CHECK(aogen::to_string(variant::workgroup_side_range) == "1..32");
     struct count {
         const char* subject;
@@ -102,9 +106,9 @@ TEST_CASE("axes: a variant's counts are bounded by the ranges beside them", "[ax
         int variant::*field;
         aogen::technique tech;
     };
-    for (const count& c : {count{"ssao samples", variant::ssao_samples_range, &variant::ssao_samples, aogen::technique::ssao},
-                           count{"gtao slices", variant::gtao_slices_range, &variant::gtao_slices, aogen::technique::gtao},
-                           count{"gtao steps", variant::gtao_steps_range, &variant::gtao_steps, aogen::technique::vbao}}) {
+    for (const count& c : {count{"ssao samples", variant::samples_range, &variant::samples, aogen::technique::ssao},
+                           count{"gtao slices", variant::slices_range, &variant::slices, aogen::technique::gtao},
+                           count{"vbao steps", variant::steps_range, &variant::steps, aogen::technique::vbao}}) {
         INFO(c.subject);
         for (int bad : {c.range.lo - 1, c.range.hi + 1, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()}) {
             variant v;
@@ -121,3 +125,5 @@ TEST_CASE("axes: a variant's counts are bounded by the ranges beside them", "[ax
         }
     }
 }
+
+} // namespace unity_test_axes

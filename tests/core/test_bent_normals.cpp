@@ -12,6 +12,10 @@
 #include <algorithm>
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_bent_normals {
+
 using namespace aogen;
 
 namespace {
@@ -131,3 +135,5 @@ TEST_CASE("bent normals: decode_bent_normal reads the shader's encoding back wit
     CHECK(unorm(-1e-6f) == 128);
     CHECK((both[3] == 0.0f && both[4] == 0.0f && both[5] == 0.0f));
 }
+
+} // namespace unity_test_bent_normals

@@ -17,6 +17,10 @@
 #include <map>
 #include <set>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_codegen {
+
 using namespace aogen;
 using aogen::codegen::resource_kind;
 using aogen::codegen::shader_source;
@@ -31,8 +35,8 @@ std::vector<variant> broad_set()
 {
     variant_matrix m;
     m.techniques = {technique::ssao, technique::gtao, technique::vbao};
-    m.ssao_samples = {1, 16};
-    m.gtao_slices = {1, 3};
+    m.samples = {1, 16};
+    m.slices = {1, 3};
     m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
     m.blur_depth = {bilateral_depth::linear, bilateral_depth::seed_raw};
     m.normals = {normal_source::gbuffer_world, normal_source::reconstructed};
@@ -201,7 +205,7 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
         return layout::declare(layout::compute(b, layout::rules::std140), layout::language::glsl, o);
     };
     variant v;
-    v.ssao_samples = 32;
+    v.samples = 32;
     std::vector<shader_source> s = codegen::generate(v);
     CHECK(s[0].glsl.find("#line 1 \"aogen:SsaoUniforms\"\n" + decl(uniforms::ssao_block(32))) != std::string::npos);
     CHECK(s[1].glsl.find("#line 1 \"aogen:BlurUniforms\"\n" + decl(uniforms::blur_block())) != std::string::npos);
@@ -214,7 +218,7 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
     CHECK(s[0].glsl.find("#line 1 \"vbao.glsl\"") != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"gtao.glsl\"") == std::string::npos);
     v.tech = technique::sao;
-    v.ssao_samples = 12;
+    v.samples = 12;
     s = codegen::generate(v);
     CHECK(s[0].glsl.find("#line 1 \"aogen:SaoUniforms\"\n" + decl(uniforms::sao_block(12))) != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"sao.glsl\"") != std::string::npos);
@@ -396,7 +400,7 @@ TEST_CASE("codegen: a directory reader normalises CRLF and names a missing file"
 TEST_CASE("codegen: invalid input is an aogen::error", "[codegen]")
 {
     variant v;
-    v.ssao_samples = 0;
+    v.samples = 0;
     CHECK_THAT(error_of([&] { codegen::generate(v); }), Contains("ssao samples: 0 is out of range (valid: 1..256)"));
     v = variant{};
     v.tech = technique::gtao;
@@ -554,6 +558,8 @@ TEST_CASE("codegen: a plan holds what the public part functions return", "[codeg
         CHECK(i == p.shaders().size());
     }
     variant bad;
-    bad.ssao_samples = 0;
+    bad.samples = 0;
     CHECK_THAT(error_of([&] { codegen::make_plan(bad); }), Contains("ssao samples"));
 }
+
+} // namespace unity_test_codegen

@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_declare {
+
 using Catch::Contains;
 using Catch::StartsWith;
 using namespace aogen::layout;
@@ -428,3 +432,5 @@ TEST_CASE("layout: a runtime-sized array in a uniform rule set names the member 
                   std::string(to_name(r)) + ")");
     }
 }
+
+} // namespace unity_test_declare

@@ -13,6 +13,10 @@
 #include <limits>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_half {
+
 using aogen::float_to_half;
 using aogen::half_to_float;
 
@@ -187,3 +191,5 @@ TEST_CASE("float_to_half matches _Float16 on special and random floats", "[half]
 }
 
 #endif // __FLT16_MANT_DIG__
+
+} // namespace unity_test_half

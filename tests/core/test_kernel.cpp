@@ -12,6 +12,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_kernel {
+
 namespace kernel = aogen::kernel;
 using aogen::vec4;
 
@@ -248,3 +252,5 @@ TEST_CASE("hammersley kernel: low discrepancy shows in its moments", "[kernel][s
         CHECK(std::fabs(sum_y / 256) < 0.002);
     }
 }
+
+} // namespace unity_test_kernel

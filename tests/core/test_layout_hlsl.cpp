@@ -41,6 +41,10 @@
 
 #include <string>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_layout_hlsl {
+
 using Catch::Contains;
 using namespace aogen::layout;
 
@@ -522,3 +526,5 @@ TEST_CASE("hlsl-cbuffer: the declaration spells GLSL matCxR as column_major floa
                          Contains("column_major float3x2 e[7];") && Contains("int3 f;") &&
                          Contains("cbuffer C : register(b2, space0) {"));
 }
+
+} // namespace unity_test_layout_hlsl

@@ -33,6 +33,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_layout_wgsl {
+
 using Catch::Contains;
 using namespace aogen::layout;
 
@@ -613,3 +617,5 @@ TEST_CASE("wgsl-uniform: the declaration carries @align(16) and @size exactly wh
     CHECK(count_of(text, "@align") == 3);
     CHECK(count_of(text, "@size") == 2);
 }
+
+} // namespace unity_test_layout_wgsl

@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_layout_writer {
+
 using Catch::Contains;
 using namespace aogen::layout;
 using aogen::mat4;
@@ -422,3 +426,5 @@ TEST_CASE("writer: descending into a non-struct, or into an array without an ind
     CHECK_THAT(error_of([&] { w.set("lights[0]color", vec3{}); }),
                Contains("lights[0]color") && Contains("cannot descend into 'lights'"));
 }
+
+} // namespace unity_test_layout_writer

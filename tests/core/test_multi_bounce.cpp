@@ -12,6 +12,10 @@
 #include <cmath>
 #include <cstring>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_multi_bounce {
+
 using namespace aogen;
 
 namespace {
@@ -150,3 +154,5 @@ TEST_CASE("multi-bounce: only a -mbg chain's last pass declares the albedo, at i
             }
     }
 }
+
+} // namespace unity_test_multi_bounce

@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_mutants_catalogue {
+
 TEST_CASE("mutants: docs/tests.md's table of planted faults is tests/mutants/mutants.json's", "[docs]")
 {
     std::ifstream json_in(AOGEN_MUTANTS_FILE);
@@ -38,3 +42,5 @@ TEST_CASE("mutants: docs/tests.md's table of planted faults is tests/mutants/mut
     CHECK(rows == names);
     CHECK(doc.find(std::to_string(names.size()) + " mutants, " + std::to_string(kill_tests) + " kill tests") != std::string::npos);
 }
+
+} // namespace unity_test_mutants_catalogue

@@ -9,6 +9,10 @@
 #include <array>
 #include <string>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_names {
+
 namespace names = aogen::names;
 using aogen_test::error_of;
 
@@ -104,3 +108,5 @@ TEST_CASE("names: distinct rejects a repeated value or a name repeated up to '-'
 // Planted: a test that asserts nothing. Hidden ([.]); ctest runs it by name and requires it to
 // fail (tests/CMakeLists.txt), which proves catch_main.cpp's NoAssertions rule is in force.
 TEST_CASE("planted: a test that asserts nothing", "[.][planted]") {}
+
+} // namespace unity_test_names

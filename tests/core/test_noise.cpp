@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_noise {
+
 namespace noise = aogen::noise;
 using aogen::vec4;
 
@@ -285,3 +289,5 @@ TEST_CASE("noise names round-trip, unknown names list the valid ones", "[noise]"
     CHECK_THROWS_WITH(noise::generate(static_cast<noise::pattern>(2), 4, 0),
                       "noise pattern: 2 is not a valid value (valid: random, r2)");
 }
+
+} // namespace unity_test_noise

@@ -9,6 +9,10 @@
 #include <stdexcept>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_parallel {
+
 TEST_CASE("parallel: every index runs exactly once, on any thread count", "[parallel]")
 {
     for (unsigned threads : {1u, 2u, 7u}) {
@@ -36,3 +40,5 @@ TEST_CASE("parallel: the first exception is rethrown once every thread has stopp
         CHECK(ran.load() == 100); // the others still ran: a failure does not leave work half done in a thread
     }
 }
+
+} // namespace unity_test_parallel

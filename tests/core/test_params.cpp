@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_params {
+
 using Catch::Contains;
 
 using aogen_test::error_of;
@@ -311,3 +315,5 @@ TEST_CASE("params: every blur field rejects bad values and accepts its bounds", 
     });
 
 }
+
+} // namespace unity_test_params

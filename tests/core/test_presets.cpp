@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_presets {
+
 using Catch::Contains;
 using aogen_test::error_of;
 
@@ -21,7 +25,7 @@ TEST_CASE("presets: Taos SSAO holds seeds 000/002's numbers", "[presets]")
     CHECK(std::string(p.name) == "taos_ssao");
     const aogen::variant& v = p.variant;
     CHECK(v.tech == aogen::technique::ssao);
-    CHECK(v.ssao_samples == 16);                             // "A 16-sample kernel"
+    CHECK(v.samples == 16);                             // "A 16-sample kernel"
     CHECK(v.half_resolution);                                // "AO pass at half resolution"
     CHECK(v.range_check == aogen::ssao_range_check::taos);
     CHECK(v.output == aogen::ssao_output::strength);
@@ -52,8 +56,8 @@ TEST_CASE("presets: Taos GTAO holds seed 001's numbers", "[presets]")
     CHECK(p.settings.gtao.falloff_range == 0.0f);
     CHECK(p.settings.gtao.thin_occluder == 0.0f);
     // Slices × steps: the variant's default (docs/design.md § Variant axes).
-    CHECK(p.variant.gtao_slices == 2);
-    CHECK(p.variant.gtao_steps == 3);
+    CHECK(p.variant.slices == 2);
+    CHECK(p.variant.steps == 3);
     // "the same separable bilateral / box-blur pipelines as SSAO"
     CHECK(p.variant.blur == aogen::blur_mode::bilateral);
     CHECK(p.variant.blur_depth == aogen::bilateral_depth::seed_raw);
@@ -69,7 +73,7 @@ TEST_CASE("presets: Unique Engine holds seed 003's numbers", "[presets]")
     CHECK(p.settings.ssao.bias == 0.025f);
     CHECK(p.settings.ssao.power == 1.0f);
     CHECK(p.settings.ssao.intensity == 1.0f);
-    CHECK(p.variant.ssao_samples == 32);
+    CHECK(p.variant.samples == 32);
     CHECK(p.variant.output == aogen::ssao_output::power_intensity);
     CHECK(p.variant.normals == aogen::normal_source::gbuffer_view);
     CHECK(p.variant.blur == aogen::blur_mode::bilateral);
@@ -80,7 +84,7 @@ TEST_CASE("presets: the point-cloud viewer holds seed 004's numbers", "[presets]
     const aogen::preset p = aogen::presets::pointcloud_viewer_ssao();
     CHECK_NOTHROW(aogen::validate(p));
     CHECK(std::string(p.name) == "pointcloud_viewer_ssao");
-    CHECK(p.variant.ssao_samples == 64);
+    CHECK(p.variant.samples == 64);
     CHECK(p.variant.range_check == aogen::ssao_range_check::seed004);
     CHECK(p.variant.output == aogen::ssao_output::strength); // ao = 1 - occlusion/64
     CHECK(p.settings.ssao.strength == 1.0f);
@@ -114,6 +118,8 @@ TEST_CASE("presets: validating a preset names the part that is wrong", "[presets
     p.settings.blur.raw_depth_k = -1.0f;
     CHECK_THAT(error_of([&] { aogen::validate(p); }), Contains("blur.raw_depth_k: -1"));
     p = aogen::presets::taos_gtao();
-    p.variant.gtao_slices = 17;
+    p.variant.slices = 17;
     CHECK_THAT(error_of([&] { aogen::validate(p); }), Contains("gtao slices: 17 is out of range (valid: 1..16)"));
 }
+
+} // namespace unity_test_presets

@@ -8,6 +8,10 @@
 #include <cstdint>
 #include <string>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_random {
+
 using aogen::random::pcg32;
 
 TEST_CASE("pcg32 reproduces pcg32_srandom_r(42, 54) from pcg-c's demo", "[random]")
@@ -133,3 +137,5 @@ TEST_CASE("cos_sin_turns agrees with libm and is exact at quarter turns", "[rand
     // sin(π/6) = 1/2.
     CHECK(std::fabs(cos_sin_turns(1.0 / 12.0).s - 0.5) < 2e-16);
 }
+
+} // namespace unity_test_random

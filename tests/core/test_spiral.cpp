@@ -8,6 +8,10 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_spiral {
+
 using namespace aogen;
 
 TEST_CASE("spiral: tap i at (i + 1/2) / N of the radius, i golden angles round, unit directions", "[spiral]")
@@ -60,3 +64,5 @@ TEST_CASE("spiral: a tap count outside 1..256 is refused by name", "[spiral][err
     CHECK_THROWS_WITH(spiral::taps(0), Catch::Contains("spiral taps: 0 is out of range (valid: 1..256)"));
     CHECK_THROWS_WITH(spiral::taps(257), Catch::Contains("spiral taps: 257"));
 }
+
+} // namespace unity_test_spiral

@@ -14,6 +14,10 @@
 #include <cstring>
 #include <set>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_temporal {
+
 using namespace aogen;
 
 namespace {
@@ -221,3 +225,5 @@ TEST_CASE("temporal: a step offset outside 0..1 or not finite is refused by name
         CHECK_NOTHROW(uniforms::pack_gtao(gtao_params{}, cam, {80, 45}, layout::rules::std140, 4, e));
     }
 }
+
+} // namespace unity_test_temporal

@@ -10,6 +10,10 @@
 
 #include <cstring>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_uniforms {
+
 using namespace aogen;
 using layout::rules;
 
@@ -92,7 +96,7 @@ TEST_CASE("Taos SSAO block: sizes and offsets worked out from each rule set", "[
 TEST_CASE("Taos SSAO bytes hold the preset, the camera and the kernel", "[uniforms]")
 {
     const preset taos = presets::taos_ssao();
-    const std::vector<vec4> kernel = kernel::crytek(taos.variant.ssao_samples, 1);
+    const std::vector<vec4> kernel = kernel::crytek(taos.variant.samples, 1);
     mat4 proj;
     std::memcpy(&proj, simple_proj, sizeof proj);
     const uniforms::camera cam{mat4{}, proj};
@@ -202,3 +206,5 @@ TEST_CASE("Packing sizes the SSAO block by its kernel and rejects kernels out of
                       Catch::Contains("ssao.radius"));
     CHECK_THROWS_AS(uniforms::pack_ssao(ssao, cam, kernel::crytek(16, 1), {0, 540}, rules::std140), aogen::error);
 }
+
+} // namespace unity_test_uniforms

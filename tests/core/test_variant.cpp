@@ -13,6 +13,10 @@
 
 #include <set>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_test_variant {
+
 using namespace aogen;
 using aogen_test::error_of;
 using Catch::Contains;
@@ -24,9 +28,9 @@ std::vector<variant> broad_set()
 {
     variant_matrix m;
     m.techniques = {technique::ssao, technique::gtao, technique::vbao};
-    m.ssao_samples = {1, 256};
-    m.gtao_slices = {1, 16};
-    m.gtao_steps = {16};
+    m.samples = {1, 256};
+    m.slices = {1, 16};
+    m.steps = {16};
     m.blur = {blur_mode::bilateral, blur_mode::box, blur_mode::none};
     m.blur_depth = {bilateral_depth::linear, bilateral_depth::seed_raw};
     m.normals = {normal_source::gbuffer_world, normal_source::gbuffer_view, normal_source::reconstructed};
@@ -59,8 +63,8 @@ TEST_CASE("variant: vbao shares gtao's slice x step token, keeps its counts, and
 {
     const variant v = variant_from_name("vbao-9x3-full-bilateral-gbufview-rev-ortho-cs-fp16");
     CHECK(v.tech == technique::vbao);
-    CHECK(v.gtao_slices == 9);
-    CHECK(v.gtao_steps == 3);
+    CHECK(v.slices == 9);
+    CHECK(v.steps == 3);
     CHECK(!v.half_resolution);
     CHECK(to_name(variant_from_name(to_name(v))) == "vbao-9x3-full-bilateral-gbufview-rev-ortho-cs-fp16");
     // Same axes, other technique: another variant, another name, another hash.
@@ -78,9 +82,9 @@ TEST_CASE("variant: vbao shares gtao's slice x step token, keeps its counts, and
     for (const std::string& n : names) CHECK((n.rfind("AO_GTAO", 0) != 0 && n.rfind("AO_SSAO", 0) != 0));
     // SSAO's axes are irrelevant to it, as to GTAO.
     variant a = v;
-    a.ssao_samples = 64, a.range_check = ssao_range_check::seed004;
+    a.samples = 64, a.range_check = ssao_range_check::seed004;
     CHECK(a == v);
-    CHECK_THAT(error_of([] { variant_from_name("vbao-17x3-half-bilateral-gbufworld-std-persp-cs"); }), Contains("gtao slices: 17 is out of range"));
+    CHECK_THAT(error_of([] { variant_from_name("vbao-17x3-half-bilateral-gbufworld-std-persp-cs"); }), Contains("vbao slices: 17 is out of range"));
     CHECK_THAT(error_of([] { variant_from_name("vbao-2x3-half-bilateral-gbufworld-std-persp-cs-pc"); }),
                Contains("not available with vbao"));
     CHECK_THAT(error_of([] { variant_from_name("vbao-s16-half-bilateral-gbufworld-std-persp-cs"); }), Contains("is not slices x steps"));
@@ -90,7 +94,7 @@ TEST_CASE("variant: sao shares ssao's sample token, refuses fp16 and the point-c
 {
     const variant v = variant_from_name("sao-s12-full-denoise-recon-revinf-ortho-cs-mip3");
     CHECK(v.tech == technique::sao);
-    CHECK(v.ssao_samples == 12);
+    CHECK(v.samples == 12);
     CHECK(v.depth_mips == 3);
     CHECK(to_name(variant_from_name(to_name(v))) == "sao-s12-full-denoise-recon-revinf-ortho-cs-mip3");
     variant s = v;
@@ -105,12 +109,12 @@ TEST_CASE("variant: sao shares ssao's sample token, refuses fp16 and the point-c
     for (const std::string& n : names) CHECK((n.rfind("AO_SSAO", 0) != 0 && n.rfind("AO_RANGE_CHECK", 0) != 0 && n.rfind("AO_OUTPUT", 0) != 0));
     // SSAO's range check, output and decisions, and the slice counts, are not SAO's.
     variant a = v;
-    a.range_check = ssao_range_check::seed004, a.output = ssao_output::power_intensity, a.decisions = ssao_decisions::step, a.gtao_slices = 7;
+    a.range_check = ssao_range_check::seed004, a.output = ssao_output::power_intensity, a.decisions = ssao_decisions::step, a.slices = 7;
     CHECK(a == v);
     variant b = v;
-    b.ssao_samples = 13;
+    b.samples = 13;
     CHECK(b != v);
-    CHECK_THAT(error_of([] { variant_from_name("sao-s0-half-bilateral-gbufworld-std-persp-cs"); }), Contains("ssao samples: 0 is out of range"));
+    CHECK_THAT(error_of([] { variant_from_name("sao-s0-half-bilateral-gbufworld-std-persp-cs"); }), Contains("sao taps: 0 is out of range"));
     CHECK_THAT(error_of([] { variant_from_name("sao-2x3-half-bilateral-gbufworld-std-persp-cs"); }), Contains("is not a sample count"));
     CHECK_THAT(error_of([] { variant_from_name("sao-s16-half-bilateral-gbufworld-std-persp-cs-pc"); }), Contains("not available with sao"));
     CHECK_THAT(error_of([] { variant_from_name("sao-s16-half-bilateral-gbufworld-std-persp-cs-fp16"); }),
@@ -139,7 +143,7 @@ TEST_CASE("variant: canonical form ignores the axes a technique does not use", "
 {
     variant a, b;
     a.tech = b.tech = technique::gtao;
-    b.ssao_samples = 64;
+    b.samples = 64;
     b.blur_depth = bilateral_depth::seed_raw; // bilateral is on: this one counts
     CHECK(a != b);
     a.blur_depth = bilateral_depth::seed_raw;
@@ -305,12 +309,12 @@ TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO and VBAO only,
         v.tech = t;
         INFO(name);
         apply_quality(v, quality_preset_from_name(name));
-        CHECK(v.gtao_slices == counts.first);
-        CHECK(v.gtao_steps == counts.second);
+        CHECK(v.slices == counts.first);
+        CHECK(v.steps == counts.second);
         CHECK(quality_name_of(v) == name);
         validate(v);
     }
-    v.gtao_slices = 2, v.gtao_steps = 3; // the default 2x3 is no preset
+    v.slices = 2, v.steps = 3; // the default 2x3 is no preset
     CHECK(quality_name_of(v).empty());
     CHECK(quality_name_of(variant{}).empty());
     CHECK_THAT(error_of([] { quality_preset_from_name("epic"); }), Contains("'epic' is not a quality preset (valid: low, medium, high, ultra)"));
@@ -323,3 +327,5 @@ TEST_CASE("variant: a pipeline stage's AO pass compiles as that shader stage", "
     CHECK(aogen::stage_of(aogen::pipeline_stage::compute) == aogen::shader_stage::compute);
     CHECK(aogen::stage_of(aogen::pipeline_stage::fragment) == aogen::shader_stage::fragment);
 }
+
+} // namespace unity_test_variant

@@ -6,6 +6,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_calibrate_test {
+
 using namespace aogen_report;
 
 namespace {
@@ -75,3 +79,5 @@ TEST_CASE("calibration: ao^p keeps background ones and non-finite values")
     CHECK(std::isinf(out[3]));
     CHECK(out[4] == 1.0f); // clamped to [0, 1] first
 }
+
+} // namespace unity_calibrate_test

@@ -13,6 +13,10 @@
 
 #include <map>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_fetch_floor_test {
+
 namespace {
 
 bool same_resources(const std::vector<aogen::codegen::resource>& a, const std::vector<aogen::codegen::resource>& b)
@@ -81,3 +85,5 @@ TEST_CASE("report: a floor replaces exactly the shading templates")
     v.stage = aogen::pipeline_stage::fragment;
     CHECK(aogen_report::floor_sources(v)[0].stage == aogen::shader_stage::compute);
 }
+
+} // namespace unity_fetch_floor_test

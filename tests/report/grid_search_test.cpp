@@ -6,6 +6,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_grid_search_test {
+
 using aogen_report::narrowing_grid_search;
 using aogen_report::search_axis;
 
@@ -37,3 +41,5 @@ TEST_CASE("grid search: bad settings are errors", "[grid_search]")
     CHECK_THROWS(narrowing_grid_search({{"a", 0, 1}}, 1, 3, f));
     CHECK_THROWS(narrowing_grid_search({{"a", 2, 1}}, 3, 3, f));
 }
+
+} // namespace unity_grid_search_test

@@ -6,6 +6,10 @@
 
 #include <catch2/catch.hpp>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_html_text_test {
+
 using namespace aogen_report;
 
 TEST_CASE("html text: base64 gives RFC 4648's test vectors, and every byte value")
@@ -56,3 +60,5 @@ TEST_CASE("svg plot: short names, log ticks and their text")
     CHECK(detail::tick_text(0.025) == "0.025");
     CHECK(detail::linear_step(0.13) == Approx(0.02));
 }
+
+} // namespace unity_html_text_test

@@ -13,6 +13,10 @@
 
 #include <catch2/catch.hpp>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_images_test {
+
 using namespace aogen_report;
 
 TEST_CASE("images: half resolution upsamples to full by reading pixel x / 2, odd sizes included")
@@ -275,3 +279,5 @@ TEST_CASE("images: at 320x180 the label is drawn at scale 2 in a 26-row band")
     CHECK(count(img, 0, 0, img.width, 26, label_text_colour) > 400);
     CHECK(pixel(img, 1, 26) == grey(a.reference[1]));
 }
+
+} // namespace unity_images_test

@@ -5,6 +5,10 @@
 
 #include <limits>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_metrics_test {
+
 using aogen_report::compare;
 
 TEST_CASE("metrics: hand-worked errors over valid pixels only")
@@ -46,3 +50,5 @@ TEST_CASE("metrics: mismatched sizes are an error, an empty mask gives zeros")
     CHECK(m.pixels == 0);
     CHECK(m.rmse == 0.0);
 }
+
+} // namespace unity_metrics_test

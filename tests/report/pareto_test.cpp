@@ -5,6 +5,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_pareto_test {
+
 using aogen_report::pareto_optimal;
 
 TEST_CASE("pareto: a point is optimal unless another is at least as fast and as accurate")
@@ -22,3 +26,5 @@ TEST_CASE("pareto: identical points are both optimal, unmeasured ones never are"
     CHECK(pareto_optimal({1, 1, nan, 0.1}, {0.2, 0.2, 0.0, nan}) == std::vector<bool>{true, true, false, false});
     CHECK_THROWS_WITH(pareto_optimal({1, 2}, {0.1}), Catch::Contains("one time and one error per variant"));
 }
+
+} // namespace unity_pareto_test

@@ -19,6 +19,10 @@
 #include <string>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_reference_test {
+
 namespace {
 
 using aogen::scenes::gbuffer;
@@ -320,3 +324,5 @@ TEST_CASE("reference: the same image for any number of threads")
         if (one.valid[i]) CHECK(one.ao[i] == three.ao[i]);
     CHECK(one.noise_rms == three.noise_rms);
 }
+
+} // namespace unity_reference_test

@@ -13,6 +13,10 @@
 
 #include <iostream>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_suite_test {
+
 namespace {
 
 aogen_report::suite_data run_scale_case(const std::string& variant)
@@ -52,3 +56,5 @@ TEST_CASE("stability: the scale factors are the powers of ten from 1e-6 to 1e6 b
     CHECK(k.back() == Approx(1e6).epsilon(1e-12));
     for (double f : k) CHECK(f != 1.0);
 }
+
+} // namespace unity_suite_test

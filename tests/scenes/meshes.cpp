@@ -5,6 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_meshes {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -164,3 +168,5 @@ TEST_CASE("a built-in scene whose model file is missing says to install assimp-t
                       Catch::Contains("built-in scene engine") && Catch::Contains("/usr/share/assimp/models/no/such/model.glb") &&
                           Catch::Contains("install assimp-testmodels"));
 }
+
+} // namespace unity_meshes

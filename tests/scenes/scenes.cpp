@@ -1,6 +1,10 @@
 // aogen::scenes: scene JSON, built-in scenes, and the ray-cast G-buffer's depth and normals.
 #include "scene_tests.hpp"
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_scenes {
+
 namespace {
 
 // A plane z_view = −distance facing a camera at `eye` (the origin unless told) that looks
@@ -246,3 +250,5 @@ TEST_CASE("normals_facing as_stored keeps a surface's own normal, the default fa
     CHECK_THAT(message_of(R"({"name": "x", "geometry": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}],
         "renderer": {"normals_facing": "outward"}})"), Catch::Contains("renderer.normals_facing") && Catch::Contains("as_stored"));
 }
+
+} // namespace unity_scenes

@@ -4,6 +4,10 @@
 
 #include <limits>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_splats_depth {
+
 namespace {
 
 // The point's view-space position (camera basis, double), as the projection sees it.
@@ -193,3 +197,5 @@ TEST_CASE("the JSON depth_buffer option reaches the G-buffer", "[scenes][depth][
                                          "renderer": {"depth_buffer": "d32"}})");
     CHECK_THAT(m, Catch::Contains("scene.json.renderer.depth_buffer") && Catch::Contains("d32_sfloat, d24_unorm, d16_unorm"));
 }
+
+} // namespace unity_splats_depth

@@ -10,6 +10,10 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_closed_forms {
+
 using aogen::truth::estimate;
 using aogen::truth::options;
 using aogen::truth::scene;
@@ -298,3 +302,5 @@ TEST_CASE("truth: the bent normal by an infinite wall at angle a leans away from
         check_bent(s.ao({0, 0, 0}, {0, 0, 1}), {-2.0 / 3 * std::sin(a) * std::sin(a), 0, 2.0 / 3 * a - std::sin(2 * a) / 3});
     }
 }
+
+} // namespace unity_closed_forms

@@ -16,6 +16,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_bent_normal_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -124,3 +128,5 @@ TEST_CASE("vulkan: a bent normal leans out of the crease away from the occluder 
     }
     require_clean(*ctx);
 }
+
+} // namespace unity_bent_normal_test

@@ -11,6 +11,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_chain_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -160,3 +164,5 @@ TEST_CASE("vulkan: spread_of is the median and nearest-rank p10 and p90")
     CHECK(vulkan::spread_of({2, 1, 3}).median == 2);
     CHECK(std::isnan(vulkan::spread_of({}).median));
 }
+
+} // namespace unity_chain_test

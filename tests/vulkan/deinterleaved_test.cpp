@@ -6,6 +6,10 @@
 // run over a target cleared to 0 and to 1, a pixel no invocation wrote would keep the clear.
 #include "harness.hpp"
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_deinterleaved_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -44,3 +48,5 @@ TEST_CASE("vulkan: a -deint variant's chain equals its twin's bit for bit, every
         }
     require_clean(*ctx);
 }
+
+} // namespace unity_deinterleaved_test

@@ -8,6 +8,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_denoise_upsample_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -194,3 +198,5 @@ TEST_CASE("vulkan: the depth-aware upsample is upsample.glsl's joint bilateral u
         }
     require_clean(*ctx);
 }
+
+} // namespace unity_denoise_upsample_test

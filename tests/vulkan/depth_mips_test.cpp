@@ -11,6 +11,10 @@
 #include <cmath>
 #include <tuple>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_depth_mips_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -183,3 +187,5 @@ TEST_CASE("vulkan: a -mipN variant reads its far taps from the chain: its twin's
         }
     require_clean(*ctx);
 }
+
+} // namespace unity_depth_mips_test

@@ -14,6 +14,10 @@
 #include <limits>
 #include <memory>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_diagnostics_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -143,3 +147,5 @@ TEST_CASE("vulkan: a negative strength shows as raw values above 1 in the AO pas
     for (float a : r.ao) REQUIRE((a >= 0.0f && a <= 1.0f));
     require_clean(*ctx);
 }
+
+} // namespace unity_diagnostics_test

@@ -14,6 +14,10 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_fp16_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -88,3 +92,5 @@ TEST_CASE("vulkan: fp16 variants keep the contract and stay within 5/255 (mean 0
         require_clean(*ctx);
     }
 }
+
+} // namespace unity_fp16_test

@@ -12,6 +12,10 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_fragment_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -158,3 +162,5 @@ TEST_CASE("vulkan: D32_SFLOAT refuses depth outside 0 to 1, R32_SFLOAT takes it"
     CHECK_NOTHROW(c.run(s.g, settings_for(s.proj)));
     require_clean(*ctx);
 }
+
+} // namespace unity_fragment_test

@@ -6,6 +6,10 @@
 
 #include <cmath>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_gtao_falloff_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -66,3 +70,5 @@ TEST_CASE("vulkan: gtao's falloff and thin-occluder compensation only remove occ
     }
     require_clean(*ctx);
 }
+
+} // namespace unity_gtao_falloff_test

@@ -12,6 +12,10 @@
 
 #include <iostream>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_hlsl_roundtrip_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -58,3 +62,5 @@ TEST_CASE("vulkan: the emitted HLSL (SM 5.0, 6.0) round-tripped through glslang 
         }
     require_clean(*ctx);
 }
+
+} // namespace unity_hlsl_roundtrip_test

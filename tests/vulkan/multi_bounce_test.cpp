@@ -19,6 +19,10 @@
 
 #include <array>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_multi_bounce_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -210,3 +214,5 @@ TEST_CASE("vulkan: a -mbg chain bound to a G-buffer without albedo is refused by
     g.albedo.assign(7, 0.5f);
     CHECK_THROWS_WITH(c.run(g, settings_for(proj)), Catch::Contains("albedo of 7 values (valid: width × height × 4, or none)"));
 }
+
+} // namespace unity_multi_bounce_test

@@ -13,6 +13,10 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_slice_taps_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -70,3 +74,5 @@ TEST_CASE("vulkan: gtao's far taps keep an open plane open at any tilt (within 1
     }
     require_clean(*ctx);
 }
+
+} // namespace unity_slice_taps_test

@@ -16,6 +16,10 @@
 
 #include <cstring>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_temporal_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -128,3 +132,5 @@ TEST_CASE("vulkan: a step offset of a whole step makes a two-step march the one-
     }
     require_clean(*ctx);
 }
+
+} // namespace unity_temporal_test

@@ -13,6 +13,10 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per test file: the files of one executable share a translation unit
+// (tests/CMakeLists.txt: a unity build), and their helpers must not meet.
+namespace unity_vbao_test {
+
 using namespace aogen;
 using namespace aogen_test;
 
@@ -22,7 +26,7 @@ variant vbao_variant(int slices, int steps, bool half, pipeline_stage stage)
 {
     variant v;
     v.tech = technique::vbao;
-    v.gtao_slices = slices, v.gtao_steps = steps;
+    v.slices = slices, v.steps = steps;
     v.half_resolution = half;
     v.blur = blur_mode::none;
     v.stage = stage;
@@ -184,3 +188,5 @@ TEST_CASE("vulkan: vbao with a small thickness occludes less than gtao around a 
     CHECK(std::fabs(deep.mean_ao - gtao.mean_ao) < 0.1); // infinitely deep samples: about GTAO's horizons
     require_clean(*ctx);
 }
+
+} // namespace unity_vbao_test

@@ -29,6 +29,8 @@
 //     // bind with aogen::vulkan::inputs_for(v, settings, tw, th), as the variant
 #pragma once
 
+#include "report_techniques.hpp"
+
 #include <aogen/codegen.hpp>
 #include <aogen_report/floor_templates_embedded.hpp>
 
@@ -57,16 +59,20 @@ inline std::string floor_replacement_file(const std::string& name, const std::st
     aogen::fail("floor", "no floor template " + name + " for " + path, "valid: report/floor/ holds one per replaced template");
 }
 
-// The fetch floor's stand-in for aogen template `path`, or "" when it is kept.
+// The fetch floor's stand-in for aogen template `path`, or "" when it is kept: a technique's
+// AO template is replaced by its row's floor files (report_techniques.hpp), in order.
 inline std::string fetch_floor_replacement(const std::string& path)
 {
-    const std::array<const char*, 11> replaced{"common/normals.glsl", "common/slices.glsl", "ssao.glsl",         "gtao.glsl",     "vbao.glsl",
-                                               "sao.glsl",            "blur_bilateral.glsl", "blur_box.glsl",     "blur_denoise.glsl", "upsample.glsl",
-                                               "prefilter.glsl"};
+    for (const report_technique& t : report_technique_table) {
+        if (path != t.ao_template) continue;
+        std::string text;
+        for (const char* file : t.fetch_floor)
+            if (file) text += floor_replacement_file(file, path);
+        return text;
+    }
+    const std::array<const char*, 7> replaced{"common/normals.glsl", "common/slices.glsl", "blur_bilateral.glsl", "blur_box.glsl",
+                                              "blur_denoise.glsl",   "upsample.glsl",      "prefilter.glsl"};
     if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
-    // VBAO fetches what GTAO fetches (the same slices and steps): floor/vbao.glsl renames the
-    // counts, then floor/gtao.glsl's loop follows.
-    if (path == "vbao.glsl") return floor_replacement_file("vbao.glsl", path) + floor_replacement_file("gtao.glsl", path);
     return floor_replacement_file(path.substr(path.rfind('/') + 1), path); // floor/ is flat: common/normals.glsl is normals.glsl
 }
 
@@ -81,13 +87,13 @@ inline std::string bandwidth_floor_replacement(const std::string& path)
     };
     static constexpr stand_in stand_ins[] = {
         {"common/normals.glsl", "bandwidth/normals.glsl"}, {"common/slices.glsl", "bandwidth/slices.glsl"},
-        {"ssao.glsl", "bandwidth/ao.glsl"},                {"gtao.glsl", "bandwidth/ao.glsl"},
-        {"vbao.glsl", "bandwidth/ao.glsl"},                {"sao.glsl", "bandwidth/ao.glsl"},
         {"blur_bilateral.glsl", "bandwidth/blur.glsl"},
         {"blur_box.glsl", "bandwidth/blur.glsl"},          {"blur_denoise.glsl", "bandwidth/blur.glsl"},
         {"upsample.glsl", "bandwidth/upsample.glsl"},
         {"prefilter.glsl", "prefilter.glsl"}, // reads its input once already: both floors are one kernel
     };
+    for (const report_technique& t : report_technique_table)
+        if (path == t.ao_template) return floor_replacement_file("bandwidth/ao.glsl", path); // every technique's AO pass
     for (const stand_in& s : stand_ins)
         if (path == s.replaced) return floor_replacement_file(s.file, path);
     return "";

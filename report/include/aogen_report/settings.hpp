@@ -6,19 +6,17 @@
 //     aogen::vulkan::chain_settings s = aogen_report::default_settings(v, scene);
 //     aogen_report::require_radius_works(scene);                     // before any work
 //
-// Defaults are what a user gets (aogen/params.hpp): GTAO's tuned defaults, its radius
-// gtao_params::radius_per_ao_radius × the scene's AO radius R (the ground truth's radius);
-// VBAO's defaults likewise, radius vbao_params::radius_per_ao_radius × R (its thickness is a
-// fraction of the radius, so it scales with R by itself); SAO's likewise, radius
-// sao_params::radius_per_ao_radius × R (its bias is a share of the radius); for SSAO the
-// tuned defaults (ssao_params{}), radius ssao_params::radius_per_ao_radius × R, except where
-// the tuner did not search: a variant with the seeds' step decisions (-step) or Unique
-// Engine's power/intensity output (-powint) runs the seeds' presets, Taos' for the strength
-// form and Unique Engine's for power/intensity, at the radius R — with every length scaled
-// to the scene: SSAO's bias keeps its settings' ratio to the radius (0.025 at 0.5: 5 % of
-// it), and the linear bilateral depth term's sharpness (10 per unit at R = 1) scales with
-// 1/R, so every scene is seen at the same relative scale.
+// Defaults are what a user gets (aogen/params.hpp), each technique's row of
+// report_techniques.hpp scaling its lengths to the scene's AO radius R (the ground truth's
+// radius): every technique's tuned defaults, its radius <technique>_params::radius_per_ao_radius
+// × R (VBAO's thickness and SAO's bias are shares of the radius, so they scale by themselves);
+// SSAO's bias keeps its ratio to the radius; SSAO variants with the seeds' step decisions or
+// Unique Engine's power/intensity output (which the tuner does not search) run the seed
+// presets at the hemisphere R. The linear bilateral depth term's sharpness (10 per unit at
+// R = 1) scales with 1/R, so every scene is seen at the same relative scale.
 #pragma once
+
+#include "report_techniques.hpp"
 
 #include <aogen/params.hpp>
 #include <aogen/presets.hpp>
@@ -67,15 +65,9 @@ struct radius_range {
 };
 inline radius_range ao_radius_range()
 {
-    const double sharpness = aogen::blur_params{}.linear_sharpness;          // at R = 1
-    const aogen::ssao_params ssao{};
-    const double ssao_scale = aogen::ssao_params::radius_per_ao_radius; // > 1, the larger of the two outputs'
-    const double bias_ratio = ssao.bias / ssao.radius;
-    double hi = double(aogen::ssao_params::radius_range.hi) / ssao_scale;
-    hi = std::min(hi, aogen::gtao_params::radius_range.hi / double(aogen::gtao_params::radius_per_ao_radius));
-    hi = std::min(hi, double(aogen::ssao_params::bias_range.hi) / (bias_ratio * ssao_scale));
-    hi = std::min(hi, aogen::vbao_params::radius_range.hi / double(aogen::vbao_params::radius_per_ao_radius));
-    hi = std::min(hi, aogen::sao_params::radius_range.hi / double(aogen::sao_params::radius_per_ao_radius));
+    const double sharpness = aogen::blur_params{}.linear_sharpness; // at R = 1
+    double hi = report_technique_table.front().max_ao_radius();
+    for (const report_technique& t : report_technique_table) hi = std::min(hi, t.max_ao_radius());
     return {sharpness / double(aogen::blur_params::linear_sharpness_range.hi), hi};
 }
 
@@ -92,22 +84,7 @@ inline aogen::vulkan::chain_settings default_settings(const aogen::variant& v, c
 {
     const float R = float(s.ao_radius);
     aogen::vulkan::chain_settings c;
-    // SSAO takes the tuned defaults (params.hpp), which need the smooth decisions; the seeds'
-    // step decisions and the power/intensity output (which the tuner does not search) run the
-    // seeds' values at the radius R.
-    const bool seed_ssao = v.output == aogen::ssao_output::power_intensity || v.decisions == aogen::ssao_decisions::step;
-    c.ssao = !seed_ssao ? aogen::ssao_params{}
-             : v.output == aogen::ssao_output::power_intensity ? aogen::presets::unique_engine_ssao().settings.ssao
-                                                               : aogen::presets::taos_ssao().settings.ssao;
-    const float ssao_radius = seed_ssao ? R : aogen::ssao_params::radius_per_ao_radius * R;
-    c.ssao.bias = c.ssao.bias / c.ssao.radius * ssao_radius;
-    c.ssao.radius = ssao_radius;
-    c.gtao = aogen::gtao_params{}; // the tuned defaults (params.hpp)
-    c.gtao.radius = aogen::gtao_params::radius_per_ao_radius * R;
-    c.vbao = aogen::vbao_params{};
-    c.vbao.radius = aogen::vbao_params::radius_per_ao_radius * R;
-    c.sao = aogen::sao_params{}; // its bias is a share of the radius: nothing else scales
-    c.sao.radius = aogen::sao_params::radius_per_ao_radius * R;
+    for (const report_technique& t : report_technique_table) t.at_radius(c, v, R);
     c.blur = v.blur_depth == aogen::bilateral_depth::seed_raw ? aogen::presets::taos_quality_blur() : aogen::blur_params{};
     c.blur.linear_sharpness = c.blur.linear_sharpness / R;
     const aogen::scenes::scene seen = for_variant(s, v);

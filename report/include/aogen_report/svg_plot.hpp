@@ -24,6 +24,7 @@
 
 #include "html_text.hpp"
 #include "number_text.hpp"
+#include "report_techniques.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -71,17 +72,11 @@ inline constexpr double plot_marker_radius = 4.5;
 inline constexpr double plot_label_font = 10;          // px, monospace
 inline constexpr double plot_label_char_width = 6.02;  // a monospace glyph's advance at that size (0.6 em, DejaVu Sans Mono)
 
-struct technique_style {
-    const char* colour;
-    const char* shape; // circle, triangle, square, diamond
-};
-
+// A technique's marker: its row's (report_techniques.hpp), grey circles for a name no row has.
 inline technique_style style_of(const std::string& technique)
 {
-    static const std::map<std::string, technique_style> styles{
-        {"ssao", {"#1f77b4", "circle"}}, {"gtao", {"#d62728", "triangle"}}, {"vbao", {"#2ca02c", "square"}}, {"sao", {"#9467bd", "diamond"}}};
-    const auto it = styles.find(technique);
-    return it == styles.end() ? technique_style{"#555555", "circle"} : it->second;
+    const report_technique* t = report_technique_named(technique);
+    return t ? t->style : technique_style{"#555555", "circle"};
 }
 
 inline std::string num(double x) { return fixed(x, 1); }
@@ -295,8 +290,10 @@ private:
 inline void draw_legend(std::ostream& svg, const std::vector<plot_point>& points, double top)
 {
     std::vector<std::string> techniques;
-    for (const char* t : {"ssao", "gtao", "vbao", "sao"})
+    for (const report_technique& row : report_technique_table) {
+        const std::string t = aogen::to_name(row.id);
         if (std::any_of(points.begin(), points.end(), [&](const plot_point& p) { return p.technique == t; })) techniques.push_back(t);
+    }
     double x = plot_left;
     const double y = top + plot_legend_height / 2;
     for (const std::string& t : techniques) {

@@ -22,6 +22,7 @@
 
 #include "grid_search.hpp"
 #include "metrics.hpp"
+#include "report_techniques.hpp"
 #include "scene_bench.hpp"
 #include "settings.hpp"
 
@@ -35,68 +36,8 @@
 
 namespace aogen_report {
 
-// One parameter tune() can search: its range, the report's default on it (settings.hpp),
-// and how a value reaches the chain's settings for a scene of AO radius R.
-struct tune_axis {
-    search_axis range;
-    double (*default_value)();
-    void (*apply)(aogen::vulkan::chain_settings& c, float R, double x);
-};
-
-// Every axis tune() can search for `v`'s technique:
-//   gtao   radius_scale (the radius as a multiple of the scene's R), strength (the final
-//          power: visibility^strength), thickness_bias (the cut-off radius·(1 + 10·t)),
-//          falloff_range (the share of the cut-off distance a sample fades over),
-//          thin_occluder (how much longer depth offsets count);
-//   vbao   radius_scale, strength, thickness (each sample's depth, a fraction of the radius);
-//   sao    radius_scale, intensity (the Alchemy sum's sigma), bias (a share of the radius);
-//   ssao   radius_scale, strength (1 − occlusion·strength); the bias keeps its ratio to
-//          the radius, as the presets have it;
-// then, for every technique, blur_sharpness (tune_axes).
-inline std::vector<tune_axis> technique_axes(const aogen::variant& v)
-{
-    using settings = aogen::vulkan::chain_settings;
-    if (v.tech == aogen::technique::gtao)
-        return {
-            {{"radius_scale", 0.5, 2.0}, [] { return double(aogen::gtao_params::radius_per_ao_radius); },
-             [](settings& c, float R, double x) { c.gtao.radius = float(x) * R; }},
-            {{"strength", 0.25, 3.0}, [] { return double(aogen::gtao_params{}.strength); }, [](settings& c, float, double x) { c.gtao.strength = float(x); }},
-            {{"thickness_bias", 0.0, 0.6}, [] { return double(aogen::gtao_params{}.thickness_bias); },
-             [](settings& c, float, double x) { c.gtao.thickness_bias = float(x); }},
-            {{"falloff_range", 0.0, 1.0}, [] { return double(aogen::gtao_params{}.falloff_range); },
-             [](settings& c, float, double x) { c.gtao.falloff_range = float(x); }},
-            {{"thin_occluder", 0.0, 4.0}, [] { return double(aogen::gtao_params{}.thin_occluder); },
-             [](settings& c, float, double x) { c.gtao.thin_occluder = float(x); }},
-        };
-    if (v.tech == aogen::technique::vbao)
-        return {
-            {{"radius_scale", 0.5, 2.0}, [] { return double(aogen::vbao_params::radius_per_ao_radius); },
-             [](settings& c, float R, double x) { c.vbao.radius = float(x) * R; }},
-            {{"strength", 0.25, 3.0}, [] { return double(aogen::vbao_params{}.strength); }, [](settings& c, float, double x) { c.vbao.strength = float(x); }},
-            {{"thickness", 0.05, 2.0}, [] { return double(aogen::vbao_params{}.thickness); },
-             [](settings& c, float, double x) { c.vbao.thickness = float(x); }},
-        };
-    if (v.tech == aogen::technique::sao)
-        return {
-            {{"radius_scale", 0.5, 4.0}, [] { return double(aogen::sao_params::radius_per_ao_radius); },
-             [](settings& c, float R, double x) { c.sao.radius = float(x) * R; }},
-            {{"intensity", 0.25, 8.0}, [] { return double(aogen::sao_params{}.intensity); },
-             [](settings& c, float, double x) { c.sao.intensity = float(x); }},
-            {{"bias", 0.0, 0.2}, [] { return double(aogen::sao_params{}.bias); }, [](settings& c, float, double x) { c.sao.bias = float(x); }},
-        };
-    if (v.output == aogen::ssao_output::power_intensity)
-        aogen::fail("tune", aogen::to_name(v) + " has the power/intensity output", "valid: GTAO, VBAO, or SSAO with the strength output");
-    return {
-        {{"radius_scale", 0.5, 4.0}, [] { return double(aogen::ssao_params::radius_per_ao_radius); },
-         [](settings& c, float R, double x) {
-             const float radius = float(x) * R;
-             c.ssao.bias *= radius / c.ssao.radius;
-             c.ssao.radius = radius;
-         }},
-        {{"strength", 0.5, 8.0}, [] { return double(aogen::ssao_params{}.strength); },
-         [](settings& c, float, double x) { c.ssao.strength = float(x); }},
-    };
-}
+// The axes tune() can search for `v`'s technique: its row's (report_techniques.hpp).
+inline std::vector<tune_axis> technique_axes(const aogen::variant& v) { return report_technique_of(v.tech).tune_axes(v); }
 
 // technique_axes(v), then the one every chain has: blur_sharpness, the depth term's
 // sharpness of the blurs and the upsample (blur_params::linear_sharpness) per 1 / R (a

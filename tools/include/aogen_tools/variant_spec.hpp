@@ -120,9 +120,9 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
     require_axes_used(in, m.techniques);
-    if (in.has("samples")) m.ssao_samples = int_list(in, "samples", 1, 256);
-    if (in.has("slices")) m.gtao_slices = int_list(in, "slices", 1, 16);
-    if (in.has("steps")) m.gtao_steps = int_list(in, "steps", 1, 16);
+    if (in.has("samples")) m.samples = int_list(in, "samples", 1, 256);
+    if (in.has("slices")) m.slices = int_list(in, "slices", 1, 16);
+    if (in.has("steps")) m.steps = int_list(in, "steps", 1, 16);
     if (in.has("blur")) m.blur = name_list(in, "blur", blur_mode_names);
     if (in.has("bilateral_depth")) m.blur_depth = name_list(in, "bilateral_depth", bilateral_depth_names);
     if (in.has("normals")) m.normals = name_list(in, "normals", normal_source_names);
