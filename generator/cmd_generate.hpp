@@ -37,22 +37,6 @@ namespace aogen::cli {
 
 using namespace tools; // the readers and writers the command line shares with the report (tools/)
 
-// The file extension each target's output gets after "<pass>.<stage>.".
-inline const char* target_extension(compile::target t)
-{
-    switch (t) {
-    case compile::target::spv: return "spv";
-    case compile::target::glsl: return "glsl";
-    case compile::target::essl: return "essl";
-    case compile::target::hlsl50: return "sm50.hlsl";
-    case compile::target::hlsl60: return "sm60.hlsl";
-    case compile::target::msl_macos: return "macos.metal";
-    case compile::target::msl_ios: return "ios.metal";
-    case compile::target::wgsl: return "wgsl";
-    }
-    names::fail_unlisted(compile::target_names, t, "target");
-}
-
 // A C++ identifier from a variant or pass name: '-' and '.' become '_'.
 inline std::string identifier(std::string s)
 {
@@ -74,29 +58,12 @@ inline std::string spirv_array(const std::string& name, const std::vector<uint32
     return out + "\n};\n";
 }
 
-// How aogen's own tests check a target's text for `v` (docs/webgpu.md § GL runner), compute and
-// fragment alike:
-//   executed       run and compared per pixel with the SPIR-V (spv itself: the Vulkan
-//                  harness; glsl, essl: aogen::gl on OpenGL 4.5 / ES 3.2)
-//   round_tripped  compiled back to SPIR-V by glslang's HLSL front end and run on the Vulkan
-//                  harness (hlsl, hlsl60): the HLSL's meaning as glslang reads it, not DXC's
-//                  code generation
-//                  wgsl: run on Dawn (Tint's GLSL ES on its OpenGL ES backend), and
-//                  round-tripped through naga too
-//   validated      compiled and reflected, never run: MSL (no Metal compiler on Linux), and
-//                  the HLSL of fp16 variants -- glslang reads min16float as a 32-bit float
-//                  and has no min16float3x3, so a round trip would not run their arithmetic
+// How aogen's own tests check a target's text for `v` (targets.hpp's verification): its row's,
+// or its row's for fp16 variants.
 inline const char* verification(compile::target t, const variant& v)
 {
-    switch (t) {
-    case compile::target::spv:
-    case compile::target::glsl:
-    case compile::target::essl: return "executed";
-    case compile::target::hlsl50:
-    case compile::target::hlsl60: return v.fp16 ? "validated" : "round_tripped";
-    case compile::target::wgsl: return "executed";
-    default: return "validated";
-    }
+    const compile::target_info& row = compile::info(t);
+    return compile::to_name(v.fp16 ? row.checked_fp16 : row.checked);
 }
 
 class variant_generator {
@@ -130,7 +97,8 @@ public:
         std::vector<std::string> declared_structs;
         nlohmann::ordered_json passes = nlohmann::ordered_json::array();
         const std::vector<codegen::shader_source> sources = codegen::generate(v);
-        const std::vector<codegen::shader_source> essl_sources = codegen::generate(v, options_for(compile::target::essl));
+        const std::vector<codegen::shader_source> essl_sources =
+            wants(compile::target::essl) ? codegen::generate(v, options_for(compile::target::essl)) : std::vector<codegen::shader_source>{};
         const std::vector<codegen::shader_source> wgsl_sources =
             wants(compile::target::wgsl) ? codegen::generate(v, options_for(compile::target::wgsl)) : std::vector<codegen::shader_source>{};
         for (size_t i = 0; i < sources.size(); ++i) {
@@ -147,7 +115,7 @@ public:
             pass["stage"] = to_name(stage);
             nlohmann::ordered_json outputs;
             for (compile::target t : targets) {
-                const std::string path = base + "." + target_extension(t);
+                const std::string path = base + "." + compile::info(t).extension;
                 outputs[compile::to_name(t)] = path;
                 if (t == compile::target::spv) files[path] = spirv_bytes(c.spirv);
                 else if (t == compile::target::essl) files[path] = essl->text.at(t);
@@ -265,8 +233,8 @@ private:
     std::vector<compile::target> other_targets() const
     {
         std::vector<compile::target> out;
-        for (compile::target t : targets)
-            if (t != compile::target::essl && t != compile::target::wgsl) out.push_back(t);
+        for (compile::target t : targets) // made from the ordinary GLSL (options_for's default options)
+            if (!compile::info(t).four_channel_output && !compile::info(t).separate_samplers) out.push_back(t);
         return out;
     }
 
@@ -310,7 +278,7 @@ struct generate_command {
     std::string spec;
     std::string scene;
     std::string out;
-    std::string targets = "spv,glsl,essl,hlsl,hlsl60,msl,msl_ios"; // wgsl on request: it needs Node.js
+    std::string targets = compile::default_generate_targets(); // wgsl on request: it needs Node.js
     std::vector<std::string> variant_names;
     bool quiet = false;
 

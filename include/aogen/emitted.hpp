@@ -19,12 +19,13 @@
 
 namespace aogen {
 
-// The codegen options a target's texts are generated with.
+// The codegen options a target's texts are generated with: its row's (targets.hpp) needs.
 inline codegen::options options_for(compile::target t)
 {
+    const compile::target_info& row = compile::info(t);
     codegen::options o;
-    if (t == compile::target::essl || t == compile::target::wgsl) o.output_format = "rgba8";
-    if (t == compile::target::wgsl) o.model = binding_model::webgpu;
+    if (row.four_channel_output) o.output_format = "rgba8";
+    if (row.separate_samplers) o.model = binding_model::webgpu;
     return o;
 }
 

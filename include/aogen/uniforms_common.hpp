@@ -18,8 +18,8 @@
 //     inline const std::array<uniforms::settings_member<gtao_params>, 2> members{{
 //         {"radius", [](const gtao_params& p, const uniforms::extras&) { return p.radius; }},
 //         {"frame_step", uniforms::frame_step_of<gtao_params>}}};
-//     layout::block_desc b = uniforms::block_of("GtaoUniforms", members);
-//     uniforms::write_settings(w, members, p, e);
+//     layout::block_desc b{uniforms::block_of("GtaoUniforms", members), {}};
+//     std::vector<uint8_t> bytes = uniforms::settings_writer(b, members, p, cam, size, 4, rules, e).bytes();
 //
 // ERRORS
 //   aogen::error: a target size outside (0, 65536], a finalize setting or frame step outside
@@ -123,6 +123,19 @@ template <class Members, class P>
 void write_settings(layout::writer& w, const Members& members, const P& p, const extras& e)
 {
     for (const auto& m : members) w.set(m.name, m.value(p, e));
+}
+
+// A writer of `block` under `rules` with the camera members and `members`' values for `p`
+// and `e` written (a technique's pack_*: what is left to write is its arrays, if it has any).
+// `p` is validated by the caller.
+template <class Members, class P>
+layout::writer settings_writer(const layout::block_desc& block, const Members& members, const P& p, const camera& cam,
+                               vec2 target_size, int noise_size, layout::rules rules, const extras& e)
+{
+    layout::writer w(layout::compute(block, rules));
+    detail::set_camera(w, cam, target_size, noise_size, e);
+    write_settings(w, members, p, e);
+    return w;
 }
 
 } // namespace aogen::uniforms

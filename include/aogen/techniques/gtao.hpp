@@ -43,10 +43,7 @@ inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, v
                                       int noise_size = 4, const extras& e = {})
 {
     validate(p);
-    layout::writer w(layout::compute(gtao_block(), rules));
-    detail::set_camera(w, cam, target_size, noise_size, e);
-    write_settings(w, gtao_members, p, e);
-    return w.bytes();
+    return settings_writer(gtao_block(), gtao_members, p, cam, target_size, noise_size, rules, e).bytes();
 }
 
 } // namespace uniforms

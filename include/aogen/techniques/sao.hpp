@@ -48,9 +48,7 @@ inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int
                                      int noise_size = 4, const extras& e = {})
 {
     validate(p);
-    layout::writer w(layout::compute(sao_block(taps), rules));
-    detail::set_camera(w, cam, target_size, noise_size, e);
-    write_settings(w, sao_members, p, e);
+    layout::writer w = settings_writer(sao_block(taps), sao_members, p, cam, target_size, noise_size, rules, e);
     w.set("spiral", spiral::taps(taps));
     return w.bytes();
 }

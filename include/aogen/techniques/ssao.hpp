@@ -54,9 +54,7 @@ inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, c
     const int_range n = variant::samples_range;
     if (kernel.size() < size_t(n.lo) || kernel.size() > size_t(n.hi))
         fail("ssao kernel", std::to_string(kernel.size()) + " samples given", "valid: " + to_string(n) + " samples, the variant's samples");
-    layout::writer w(layout::compute(ssao_block(int(kernel.size())), rules));
-    detail::set_camera(w, cam, target_size, p.noise_size, e);
-    write_settings(w, ssao_members, p, e);
+    layout::writer w = settings_writer(ssao_block(int(kernel.size())), ssao_members, p, cam, target_size, p.noise_size, rules, e);
     w.set("kernel", kernel);
     return w.bytes();
 }

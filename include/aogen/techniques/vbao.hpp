@@ -42,10 +42,7 @@ inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, v
                                       int noise_size = 4, const extras& e = {})
 {
     validate(p);
-    layout::writer w(layout::compute(vbao_block(), rules));
-    detail::set_camera(w, cam, target_size, noise_size, e);
-    write_settings(w, vbao_members, p, e);
-    return w.bytes();
+    return settings_writer(vbao_block(), vbao_members, p, cam, target_size, noise_size, rules, e).bytes();
 }
 
 } // namespace uniforms
