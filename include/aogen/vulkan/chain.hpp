@@ -97,6 +97,9 @@ public:
     const variant& var() const { return plan_.axes(); }
     const codegen::plan& plan() const { return plan_; }
     const pass_pipelines& passes() const { return passes_; }
+    // The kernel that counts the raw images of a diagnostic chain (nullptr otherwise): a caller
+    // that binds the chain's passes itself passes it on, so the kernel is built once per chain.
+    const raw_counter* counter() const { return counter_.get(); }
 
     // The chain bound to `g` with settings `s` (inputs_for), ready to record and dispatch.
     std::unique_ptr<bound_chain> bind(const gpu_gbuffer& g, const chain_settings& s) const

@@ -147,10 +147,10 @@ public:
         }
         bench_run r;
         if (inputs.faults.empty()) {
-            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), gpu(v), in, tw, th).run_once();
+            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), gpu(v), in, tw, th, c.counter()).run_once();
         } else {
             const aogen::vulkan::gpu_gbuffer faulted(ctx_, with_faults(gbuffer(v), inputs.faults));
-            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), faulted, in, tw, th).run_once();
+            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), faulted, in, tw, th, c.counter()).run_once();
         }
         r.scale = aogen::output_scale(v);
         r.full = upsample(r.out.ao, r.out.width, r.out.height, r.scale, width(), height());
