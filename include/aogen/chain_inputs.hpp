@@ -19,7 +19,6 @@
 //     aogen::chain_inputs in = aogen::inputs_for(v, s, tw, th);    // in.uniforms[pass]
 #pragma once
 
-#include "kernel.hpp"
 #include "noise.hpp"
 #include "techniques.hpp"
 #include "temporal.hpp"

@@ -4,7 +4,7 @@
 //   A variant fixes, at compile time, every choice an AO pass makes: the technique and
 //   its sample counts, the blur, where normals come from, the depth convention and
 //   projection, the resolution and the pipeline stage. The shader templates read these
-//   as #defines (see `defines()`), so whatever a variant does not use is not in its code.
+//   as #defines (`defines()`, plan.hpp), so whatever a variant does not use is not in its code.
 //
 //   Every variant has a canonical, human-readable name that parses back into the same
 //   value, e.g.

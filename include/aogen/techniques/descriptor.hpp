@@ -55,6 +55,10 @@ inline define choice_define(const char* axis, const char* value)
     return {name, ""};
 }
 
+// The noise tile of a technique whose noise is a turn per pixel (GTAO, VBAO, SAO): 4 × 4
+// rotations, whatever the settings say (ssao_params::noise_size is SSAO's alone).
+inline int rotation_tile_size(const ao_settings&) { return 4; }
+
 // One technique, as the library sees it (see WHAT). Every member is set.
 struct technique_desc {
     technique id;

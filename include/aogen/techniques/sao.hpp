@@ -61,8 +61,8 @@ inline constexpr technique_desc sao{
     technique::sao,
     [](const variant& v) { return uniforms::sao_block(v.samples); },
     [](const variant& v, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, layout::rules rules,
-       const uniforms::extras& e) { return uniforms::pack_sao(s.sao, camera, v.samples, target_size, rules, 4, e); },
-    [](const ao_settings&) { return 4; }, // a rotation per pixel, like GTAO's
+       const uniforms::extras& e) { return uniforms::pack_sao(s.sao, camera, v.samples, target_size, rules, rotation_tile_size(s), e); },
+    rotation_tile_size, // a rotation per pixel, like GTAO's
     [](const variant&) { return std::vector<std::string>{"sao.glsl"}; },
     [](const variant& v) { return std::vector<define>{{"AO_SAO_SAMPLES", std::to_string(v.samples)}}; },
     [](const variant&) {

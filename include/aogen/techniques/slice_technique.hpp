@@ -3,7 +3,7 @@
 //
 // WHAT
 //   The parts of their table rows (descriptor.hpp) the two slice techniques have in common,
-//   each a function a row points at: noise_size, count_defines (AO_<TECH>_SLICES, _STEPS),
+//   each a function a row points at: count_defines (AO_<TECH>_SLICES, _STEPS),
 //   constants, period_turns and counts_text.
 //
 // WHY
@@ -17,9 +17,6 @@
 #include <vector>
 
 namespace aogen::slice_technique {
-
-// A rotation tile of 4 × 4: GTAO's and VBAO's noise is a turn per pixel.
-inline int noise_size(const ao_settings&) { return 4; }
 
 // AO_<TECH>_SLICES and AO_<TECH>_STEPS.
 inline std::vector<define> count_defines(const std::string& tech, const variant& v)
