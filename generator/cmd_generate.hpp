@@ -75,9 +75,12 @@ public:
 
     bool targets_include(compile::target t) const { return std::find(targets.begin(), targets.end(), t) != targets.end(); }
 
-    void add(const variant& v, const feature_list& features)
+    // Adds the planned variant `p` (made once by make_plan; each target's sources come from
+    // plan_for(p, target), which plans nothing again).
+    void add(const codegen::plan& p, const feature_list& features)
     {
-        const std::string name = to_name(v);
+        const variant& v = p.axes();
+        const std::string name = p.name();
         const std::string ns = identifier(name);
         nlohmann::ordered_json entry;
         entry["name"] = name;
@@ -96,13 +99,14 @@ public:
         std::string ns_body;
         std::vector<std::string> declared_structs;
         nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-        const std::vector<codegen::shader_source> sources = codegen::generate(v);
+        const std::vector<codegen::shader_source> sources = codegen::generate(p);
         const std::vector<codegen::shader_source> essl_sources =
-            wants(compile::target::essl) ? codegen::generate(v, options_for(compile::target::essl)) : std::vector<codegen::shader_source>{};
+            wants(compile::target::essl) ? codegen::generate(plan_for(p, compile::target::essl)) : std::vector<codegen::shader_source>{};
         const std::vector<codegen::shader_source> wgsl_sources =
-            wants(compile::target::wgsl) ? codegen::generate(v, options_for(compile::target::wgsl)) : std::vector<codegen::shader_source>{};
+            wants(compile::target::wgsl) ? codegen::generate(plan_for(p, compile::target::wgsl)) : std::vector<codegen::shader_source>{};
         for (size_t i = 0; i < sources.size(); ++i) {
             const codegen::shader_source& s = sources[i];
+            const codegen::shader_plan& planned = p.shaders()[i];
             const shader_stage stage = s.stage;
             const compile::compiled& c = compiled_once(s.glsl, stage, s.name, other_targets());
             const compile::compiled* essl = wants(compile::target::essl)
@@ -149,7 +153,7 @@ public:
                                identifier(b.instance.empty() ? b.name : b.instance) + " = " + std::to_string(b.binding) + ";\n";
             for (const codegen::resource& r : s.resources) {
                 if (r.kind != codegen::resource_kind::uniform_buffer) continue;
-                const layout::struct_layout l = layout::compute(codegen::uniform_block(v, s.pass), layout::rules::std140);
+                const layout::struct_layout& l = planned.layout; // std140, laid out by the plan
                 const compile::buffer_block* block = compile::find_block(c.refl, l.name);
                 if (!block) fail(s.name, "its SPIR-V has no uniform block " + l.name, "valid: the block codegen declared");
                 compile::check_layout(*block, l); // the core layout engine against SPIR-V's own offsets
@@ -158,7 +162,7 @@ public:
                     // the SPIR-V naga makes of the WGSL it wrote.
                     const std::optional<compile::buffer_block> naga_block = compile::find_struct_block(wgsl->refl, l.name);
                     if (!naga_block) fail(s.name, "its WGSL has no uniform struct " + l.name, "valid: the block codegen declared");
-                    compile::check_layout(*naga_block, layout::compute(codegen::uniform_block(v, s.pass), layout::rules::wgsl_uniform));
+                    compile::check_layout(*naga_block, layout::compute(planned.block, layout::rules::wgsl_uniform));
                 }
                 pass["uniforms"] = layout_to_json(l);
                 if (std::find(declared_structs.begin(), declared_structs.end(), l.name) == declared_structs.end()) {
@@ -200,13 +204,13 @@ public:
     // Translates every WebGPU-model source of `variants` to WGSL in one batch (a Node.js
     // process costs a quarter of a second): naga writes it, naga and Tint validate it, and
     // naga's SPIR-V of it is reflected for the manifest's wgsl_bindings and the layout check.
-    void prepare_wgsl(const std::vector<variant>& variants)
+    void prepare_wgsl(const std::vector<codegen::plan>& plans)
     {
         if (!wants(compile::target::wgsl)) return;
         std::vector<codegen::shader_source> unique; // by GLSL text (their names are the first variant's)
         std::vector<std::vector<uint32_t>> spirv;
-        for (const variant& v : variants)
-            for (const codegen::shader_source& s : codegen::generate(v, options_for(compile::target::wgsl))) {
+        for (const codegen::plan& p : plans)
+            for (const codegen::shader_source& s : codegen::generate(plan_for(p, compile::target::wgsl))) {
                 if (std::any_of(unique.begin(), unique.end(), [&](const codegen::shader_source& u) { return u.glsl == s.glsl; })) continue;
                 unique.push_back(s);
                 spirv.push_back(compiled_once(s.glsl, s.stage, s.name, {compile::target::spv}).spirv);
@@ -317,12 +321,12 @@ struct generate_command {
             for (const selection& existing : selected) duplicate = duplicate || existing.v == s.v;
             if (!duplicate) selected.push_back(s);
         }
-        std::vector<variant> chosen;
-        for (const selection& s : selected) chosen.push_back(s.v);
-        g.prepare_wgsl(chosen);
+        std::vector<codegen::plan> plans; // each variant planned once: every target's sources come from its plan
+        for (const selection& s : selected) plans.push_back(codegen::make_plan(s.v));
+        g.prepare_wgsl(plans);
         for (size_t i = 0; i < selected.size(); ++i) {
-            if (!quiet) std::cerr << "aogen: [" << i + 1 << "/" << selected.size() << "] " << to_name(selected[i].v) << "\n";
-            g.add(selected[i].v, selected[i].features);
+            if (!quiet) std::cerr << "aogen: [" << i + 1 << "/" << selected.size() << "] " << plans[i].name() << "\n";
+            g.add(plans[i], selected[i].features);
         }
         g.files["manifest.json"] = g.manifest.dump(2) + "\n";
         g.files["aogen_variants.hpp"] = g.header_text();

@@ -78,7 +78,7 @@ int main(int argc, char** argv)
         o.normals = v.normals == aogen::normal_source::gbuffer_view ? aogen::scenes::normal_space::view : aogen::scenes::normal_space::world;
         const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(aogen_report::for_variant(s, v), *tracer, o);
         const aogen::vulkan::gpu_gbuffer uploaded(ctx, aogen_report::renderer_gbuffer(g));
-        const aogen::vulkan::chain c(ctx, v);
+        const aogen::vulkan::chain c(ctx, aogen::codegen::make_plan(v));
         const std::unique_ptr<aogen::vulkan::bound_chain> b = c.bind(uploaded, aogen_report::default_settings(v, s));
         if (ctx.timestamp_valid_bits() == 0) aogen::fail("device", ctx.device_name() + " has no timestamps", "valid: a device with timestamps");
 

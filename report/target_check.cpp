@@ -75,14 +75,16 @@ int main(int argc, char** argv)
         aogen::vulkan::context vk(aogen::vulkan::device_options{});
         aogen::gl::context gl(aogen::gl::api::opengl), es(aogen::gl::api::opengl_es);
         std::cerr << "aogen_target_check: " << vk.device_name() << "; " << gl.version() << "; " << es.version() << "\n";
-        const aogen::codegen::options rgba8 = aogen::options_for(cc::target::essl);
+        // Each variant planned once; every target's texts come from its plan (plan_for).
+        std::vector<aogen::codegen::plan> plans;
+        for (const aogen::variant& v : vs) plans.push_back(aogen::codegen::make_plan(v));
         // WGSL: every variant's texts translated in one batch, up front. fp16 variants have no
         // WGSL form (compile.hpp refuses them), like GLSL and ESSL.
-        std::vector<aogen::variant> wgsl_variants;
-        for (const aogen::variant& v : vs)
-            if (!v.fp16) wgsl_variants.push_back(v);
+        std::vector<aogen::codegen::plan> wgsl_plans;
+        for (const aogen::codegen::plan& p : plans)
+            if (!p.axes().fp16) wgsl_plans.push_back(p);
         std::optional<aogen::vulkan::wgsl_round_trips> wgsl;
-        if (wanted(4)) wgsl.emplace(wgsl_variants);
+        if (wanted(4) || wanted(5)) wgsl.emplace(wgsl_plans);
         tally t[6];
         for (aogen::scenes::scene s : aogen_report::load_scenes(scenes)) {
             s.camera.width = w, s.camera.height = h;
@@ -90,31 +92,33 @@ int main(int argc, char** argv)
             const std::unique_ptr<aogen::truth::scene> tracer = aogen::scenes::make_tracer(s);
             aogen_report::gbuffer_cache gbuffers(vk, s, *tracer);
             std::cerr << "aogen_target_check: scene " << s.name << "\n";
-            for (const aogen::variant& v : vs) {
-                const std::string name = aogen::to_name(v);
+            for (const aogen::codegen::plan& p : plans) {
+                const aogen::variant& v = p.axes();
+                const std::string& name = p.name();
                 if (!aogen_report::cannot_run(v, s).empty()) continue; // an orthographic variant on a perspective camera, ...
-                const aogen::chain_settings settings = aogen_report::default_settings(v, s);
-                const auto [tw, th] = aogen::target_size(v, w, h);
-                const aogen::chain_inputs in = aogen::inputs_for(v, settings, tw, th);
-                const aogen::vulkan::chain spirv(vk, v);
-                const std::vector<float> expected =
-                    aogen::vulkan::bound_chain(vk, spirv.passes(), gbuffers.gpu(v), in, tw, th).run_once().ao;
+                const aogen::chain_inputs in = p.inputs(aogen_report::default_settings(v, s), w, h);
+                const aogen::vulkan::chain spirv(vk, p);
+                const std::vector<float> expected = aogen::vulkan::bound_chain(vk, spirv.passes(), gbuffers.gpu(v), in).run_once().ao;
                 // Target k's AO. fp16 variants: GLSL and ESSL have no fp16 form (compile.hpp
                 // refuses them), and glslang reads their HLSL's min16float as 32-bit floats
                 // (and has no min16float3x3), so a round trip would not run their arithmetic.
                 const auto run = [&](int k) -> std::optional<std::vector<float>> {
                     if (v.fp16 || !wanted(k)) return std::nullopt;
-                    if (k == 4) return aogen::vulkan::bound_chain(vk, *wgsl->passes(vk, v), gbuffers.gpu(v), in, tw, th).run_once().ao;
+                    if (k == 4) return aogen::vulkan::bound_chain(vk, *wgsl->passes(vk, p), gbuffers.gpu(v), in).run_once().ao;
                     if (k == 5) {
-                        const std::vector<uint8_t> bytes = aogen::wgsl::run_variant_on_dawn(v, wgsl->texts(v), gbuffers.host(v), in).ao;
+                        const std::vector<uint8_t> bytes =
+                            aogen::wgsl::run_variant_on_dawn(aogen::plan_for(p, cc::target::wgsl), wgsl->texts(p), gbuffers.host(v), in).ao;
                         std::vector<float> ao(bytes.size());
                         for (size_t i = 0; i < ao.size(); ++i) ao[i] = bytes[i] / 255.0f;
                         return ao;
                     }
-                    if (k == 0) return aogen::gl::run(gl, v, aogen::emitted_texts(v, aogen::compile::target::glsl), gbuffers.host(v), in).ao;
-                    if (k == 1) return aogen::gl::run(es, v, aogen::emitted_texts(v, aogen::compile::target::essl, rgba8), gbuffers.host(v), in, rgba8).ao;
+                    if (k == 0 || k == 1) {
+                        const cc::target target = k == 0 ? cc::target::glsl : cc::target::essl;
+                        const aogen::codegen::plan planned = aogen::plan_for(p, target);
+                        return aogen::gl::run(k == 0 ? gl : es, planned, aogen::emitted_texts(planned, target), gbuffers.host(v), in).ao;
+                    }
                     const aogen::compile::target hlsl = k == 2 ? aogen::compile::target::hlsl50 : aogen::compile::target::hlsl60;
-                    return aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, v, hlsl), gbuffers.gpu(v), in, tw, th).run_once().ao;
+                    return aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, p, hlsl), gbuffers.gpu(v), in).run_once().ao;
                 };
                 for (int k = 0; k < 6; ++k) {
                     const std::optional<std::vector<float>> got = run(k);

@@ -28,7 +28,7 @@ int main()
                 bytes.size());
     const bool seed_block_ok =
         aogen::layout::compute(aogen::uniforms::pointcloud_block(), aogen::layout::rules::wgsl_uniform).size == 144;
-    const auto shaders = aogen::codegen::generate(aogen::variant{}); // ao, blur_x, blur_y, upsample
+    const auto shaders = aogen::codegen::generate(aogen::codegen::make_plan(aogen::variant{})); // ao, blur_x, blur_y, upsample
     std::printf("%s: %zu shaders, %zu bytes of GLSL in the first\n", shaders.at(0).name.c_str(), shaders.size(),
                 shaders.at(0).glsl.size());
     const bool codegen_ok = aogen::codegen::have_embedded_templates() && shaders.size() == 4 &&

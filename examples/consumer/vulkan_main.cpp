@@ -24,7 +24,7 @@ int main()
     for (int i = 0; i < w * h; ++i) g.normals[i * 4 + 2] = 1.0f; // facing the camera
     aogen::vulkan::chain_settings s;
     s.camera = {aogen::mat4{}, proj};
-    aogen::vulkan::chain c(ctx, aogen::variant{});
+    aogen::vulkan::chain c(ctx, aogen::codegen::make_plan(aogen::variant{}));
     const aogen::vulkan::chain_result r = c.run(g, s);
     const auto [lo, hi] = std::minmax_element(r.ao.begin(), r.ao.end());
     std::printf("%s: %dx%d AO in [%g, %g], %zu validation messages\n", ctx.device_name().c_str(), r.width, r.height, *lo, *hi,

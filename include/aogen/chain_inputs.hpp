@@ -7,16 +7,17 @@
 //     gbuffer         raw depth, normals and albedo as floats, row-major, top row first
 //     chain_settings  the run-time settings of every pass (params.hpp's ao_settings), the
 //                     camera and the frame index (temporal.hpp: 0, a still frame, unless set)
-//     inputs_for(v, settings, target_w, target_h)
-//                     the std140 uniform block of each pass of `v`, the noise tile the
-//                     params name (4 × 4 for GTAO, VBAO and SAO) and, for SSAO, its kernel
+//     plan::inputs(settings, w, h)   (codegen/plan.hpp, the door)
+//                     the std140 uniform block of each pass of a planned variant, the noise
+//                     tile the params name (4 × 4 for GTAO, VBAO and SAO) and, for SSAO, its
+//                     kernel
 //     target_size     the AO target: the G-buffer's size, or half of it rounded up
 //     output_size     what the chain returns: the screen when it ends with the upsample
 //
 // USAGE
 //     aogen::chain_settings s;                                      // params + camera
-//     auto [tw, th] = aogen::target_size(v, w, h);
-//     aogen::chain_inputs in = aogen::inputs_for(v, s, tw, th);    // in.uniforms[pass]
+//     const aogen::codegen::plan p = aogen::codegen::make_plan(v);  // plan.hpp
+//     aogen::chain_inputs in = p.inputs(s, w, h);                   // in.uniforms[pass]
 #pragma once
 
 #include "noise.hpp"
@@ -95,15 +96,18 @@ inline int output_scale(const variant& v)
     return v.half_resolution && !has_upsample_pass(v) ? 2 : 1;
 }
 
+namespace detail {
+
 // What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
-// target_w × target_h: each pass's std140 uniform block (the AO pass's with frame s.frame's
-// rotation of the noise and, GTAO's and VBAO's, its step offset; every one with the finalize
-// settings), the noise tile the params name
-// (4×4 for GTAO, VBAO and SAO) and, for SSAO, the kernel inside its block (SAO's spiral
-// is inside its own).
-inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int target_w, int target_h)
+// target_w × target_h: each pass's uniform block written into `blocks` (one laid-out block per
+// pass, in pass order: a plan's, computed once) -- the AO pass's with frame s.frame's rotation
+// of the noise and, GTAO's and VBAO's, its step offset; every one with the finalize settings --,
+// the noise tile the params name (4×4 for GTAO, VBAO and SAO) and, for SSAO, the kernel inside
+// its block (SAO's spiral is inside its own). `v` is a plan's: validated. The door is
+// codegen::plan::inputs (plan.hpp).
+inline chain_inputs pack_inputs(const variant& v, const chain_settings& s, int target_w, int target_h,
+                                const std::vector<const layout::struct_layout*>& blocks)
 {
-    constexpr layout::rules rules = layout::rules::std140;
     const technique_desc& t = technique_of(v.tech);
     chain_inputs in;
     in.noise_size = t.noise_size(s);
@@ -111,10 +115,13 @@ inline chain_inputs inputs_for(const variant& v, const chain_settings& s, int ta
     const vec2 tsize{float(target_w), float(target_h)};
     const uniforms::extras e{temporal::frame_rotation(v, s.frame, s.frame_sequence), s.finalize,
                             temporal::step_offset(s.frame_sequence, s.frame)};
-    for (pass_kind pass : passes(v))
-        in.uniforms.push_back(pass == pass_kind::ao ? t.pack(v, s, s.camera, tsize, rules, e)
-                                                    : uniforms::pack_blur(s.blur, s.camera.proj, tsize, rules, e));
+    const std::vector<pass_kind> kinds = passes(v);
+    for (size_t i = 0; i < kinds.size(); ++i)
+        in.uniforms.push_back(kinds[i] == pass_kind::ao ? t.pack(v, s, s.camera, tsize, *blocks.at(i), e)
+                                                        : uniforms::pack_blur(s.blur, s.camera.proj, tsize, *blocks.at(i), e));
     return in;
 }
+
+} // namespace detail
 
 } // namespace aogen

@@ -1,7 +1,7 @@
 // aogen/codegen.hpp — a variant's GLSL: templates + #defines + the uniform block.
 //
 // WHAT
-//   generate(v) writes, for every pass of passes(v) (the AO pass, then its blur passes),
+//   generate(plan) writes, for every pass of a planned variant (the AO pass, then its blur passes),
 //   a self-contained GLSL 450 source for Vulkan, ready for glslang:
 //
 //       #version 450
@@ -31,10 +31,10 @@
 //   caller can compile it once.
 //
 // THE PLAN
-//   generate(v, o) is generate(make_plan(v, o)): plan.hpp validates the variant and the
-//   options once and lists every shader's defines, resources, files, constants and block;
-//   this header only writes them out. A caller that generates, compiles and runs a variant
-//   makes the plan once and hands it on. The options (output format, diagnostics, binding
+//   generate takes a plan and nothing else: make_plan(v, o) (plan.hpp) validates the variant
+//   and the options once and lists every shader's defines, resources, files, constants and
+//   block, laid out once; this header only writes them out. A caller that generates,
+//   compiles and runs a variant makes the plan once and hands it on. The options (output format, diagnostics, binding
 //   model, template reader) and the resource table are documented in plan.hpp.
 //
 //   What the writing adds: WebGPU's gathered textures (u_depth, u_ao_input) are declared as
@@ -47,23 +47,26 @@
 // USAGE
 //     #include <aogen/codegen.hpp>
 //     aogen::variant v;                                     // ssao-s16-half-bilateral-...
-//     for (const aogen::codegen::shader_source& s : aogen::codegen::generate(v)) {
+//     const aogen::codegen::plan p = aogen::codegen::make_plan(v);  // aogen::error if invalid
+//     for (const aogen::codegen::shader_source& s : aogen::codegen::generate(p)) {
 //         // s.pass (ao, blur_x, blur_y), s.stage (compute), s.glsl, s.files, s.resources
 //         // s.name: "ssao-s16-half-bilateral-gbufworld-std-persp-cs.ao.comp"
 //     }
 //     // while editing templates: read them from a directory instead of the embedded copy
-//     auto dev = aogen::codegen::generate(v, "/path/to/aogen/templates");
+//     aogen::codegen::options dev;
+//     dev.templates = aogen::codegen::directory_reader("/path/to/aogen/templates");
+//     auto edited = aogen::codegen::generate(aogen::codegen::make_plan(v, dev));
 //     // for OpenGL ES (then compile with aogen::compile's essl target)
 //     aogen::codegen::options o;
 //     o.output_format = "rgba8";
-//     auto es = aogen::codegen::generate(v, o);
+//     auto es = aogen::codegen::generate(p.with_options(o));     // the same plan, rgba8
 //
 // TEMPLATES
 //   The templates (templates/**/*.glsl in the source tree) are embedded at build time:
 //   CMake (cmake/aogenEmbedTemplates.cmake) writes them into aogen/templates_embedded.hpp,
 //   which is installed with the other headers, so an installed package needs no template
 //   files. A copy of the headers without that generated header still compiles; only
-//   generate(v) without a directory then throws.
+//   generate() without options::templates then throws.
 //
 // DETERMINISM
 //   Same variant, options (and template texts), same bytes: no clocks, paths or hash-map
@@ -174,7 +177,7 @@ inline std::string embedded_template(const std::string& path)
     fail("template '" + path + "'", "is not among the embedded templates", "valid: " + valid);
 #else
     fail("template '" + path + "'", "aogen was built without embedded templates (aogen/templates_embedded.hpp)",
-         "valid: build aogen with CMake, or call generate(variant, template_dir)");
+         "valid: build aogen with CMake, or set codegen::options::templates to directory_reader(dir)");
 #endif
 }
 
@@ -250,7 +253,7 @@ inline shader_source write_shader(const shader_plan& p, const variant& v, const 
             }
         if (!p.constants.empty()) g += "// Constants from aogen/params.hpp:\n";
         for (const define& d : p.constants) g += "#define " + d.name + " " + d.value + "\n";
-        const layout::struct_layout block = layout::compute(p.block, layout::rules::std140);
+        const layout::struct_layout& block = p.layout; // std140, laid out by the plan
         g += "#line 1 \"aogen:" + block.name + "\"\n";
         layout::declaration_options declared;
         declared.set = p.resources.front().set;
@@ -271,70 +274,16 @@ inline shader_source write_shader(const shader_plan& p, const variant& v, const 
 
 } // namespace detail
 
-// Every shader of a planned variant, in plan::shaders() order, templates from `read`.
-inline std::vector<shader_source> generate(const plan& p, const template_reader& read)
-{
-    std::vector<shader_source> out;
-    for (const shader_plan& s : p.shaders()) out.push_back(detail::write_shader(s, p.axes(), p.source_options(), read));
-    return out;
-}
-
-// The same with the plan's options::templates, or the embedded templates.
+// Every shader of a planned variant, in plan::shaders() order (per pass: the compute shader,
+// or the vertex then the fragment shader), its templates read by the plan's
+// options::templates, or from the embedded copy. The one door from a plan to GLSL.
 inline std::vector<shader_source> generate(const plan& p)
 {
     const template_reader& own = p.source_options().templates;
-    return generate(p, own ? own : template_reader(embedded_template));
-}
-
-// One shader of one pass, its templates read by `read`.
-inline shader_source generate_shader(const variant& v, pass_kind pass, shader_stage stage, const template_reader& read,
-                                     const options& o = {})
-{
-    const plan p = make_plan(v, o);
-    detail::require_pass(p.axes(), pass);
-    detail::require_stage(p.axes(), stage);
-    for (const shader_plan& s : p.shaders())
-        if (s.pass == pass && s.stage == stage) return detail::write_shader(s, p.axes(), o, read);
-    fail("shader", "no shader planned for this pass and stage", "valid: a pass and stage of the variant"); // unreachable
-}
-
-// Every shader of every pass of `v`, pass by pass in passes(v) order; per pass the
-// compute shader, or the vertex then the fragment shader. Templates from `read`.
-inline std::vector<shader_source> generate(const variant& v, const template_reader& read, const options& o)
-{
-    return generate(make_plan(v, o), read);
-}
-inline std::vector<shader_source> generate(const variant& v, const template_reader& read)
-{
-    return generate(v, read, options{});
-}
-
-// The same with the templates read from `template_dir` (for developing templates).
-inline std::vector<shader_source> generate(const variant& v, const std::string& template_dir, const options& o)
-{
-    return generate(v, directory_reader(template_dir), o);
-}
-inline std::vector<shader_source> generate(const variant& v, const std::string& template_dir)
-{
-    return generate(v, template_dir, options{});
-}
-inline std::vector<shader_source> generate(const variant& v, const char* template_dir, const options& o)
-{
-    return generate(v, std::string(template_dir), o);
-}
-inline std::vector<shader_source> generate(const variant& v, const char* template_dir)
-{
-    return generate(v, std::string(template_dir), options{});
-}
-
-// The same with options::templates, or the embedded templates.
-inline std::vector<shader_source> generate(const variant& v, const options& o)
-{
-    return generate(make_plan(v, o));
-}
-inline std::vector<shader_source> generate(const variant& v)
-{
-    return generate(v, options{});
+    const template_reader read = own ? own : template_reader(embedded_template);
+    std::vector<shader_source> out;
+    for (const shader_plan& s : p.shaders()) out.push_back(detail::write_shader(s, p.axes(), p.source_options(), read));
+    return out;
 }
 
 } // namespace aogen::codegen

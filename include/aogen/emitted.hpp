@@ -1,11 +1,12 @@
 // aogen/emitted.hpp — a variant's shaders as one target's texts, as `aogen generate` writes them.
 //
-//     std::vector<std::string> glsl = aogen::emitted_texts(v, aogen::compile::target::glsl);
-//     std::vector<std::string> wgsl = aogen::emitted_texts(v, aogen::compile::target::wgsl);
+//     const aogen::codegen::plan p = aogen::codegen::make_plan(v);
+//     std::vector<std::string> glsl = aogen::emitted_texts(p, aogen::compile::target::glsl);
+//     std::vector<std::string> wgsl = aogen::emitted_texts(p, aogen::compile::target::wgsl);
 //
-// One text per shader codegen::generate(v, o) returns, in its order (per pass: a compute
-// shader, or a vertex and a fragment shader), each compiled by compile.hpp to `target`, from
-// the sources options_for(target) makes: ESSL and WGSL have no r8 storage format (their compute
+// One text per shader of the plan, in its order (per pass: a compute shader, or a vertex and
+// a fragment shader), each compiled by compile.hpp to `target`, from the sources of
+// plan_for(p, target), the plan under options_for(target): ESSL and WGSL have no r8 storage format (their compute
 // passes write rgba8, the AO in .r), and WGSL comes from WebGPU's binding model. The WGSL texts
 // of a variant are translated in one batch (aogen/wgsl.hpp). What aogen::gl::run, the HLSL and
 // WGSL round trips and `aogen generate` take.
@@ -19,14 +20,22 @@
 
 namespace aogen {
 
-// The codegen options a target's texts are generated with: its row's (targets.hpp) needs.
-inline codegen::options options_for(compile::target t)
+// `o` with what target `t`'s row (targets.hpp) needs: rgba8 outputs where it has no r8
+// storage format, WebGPU's binding model where its textures and samplers are separate; the
+// diagnostics and the template reader are kept.
+inline codegen::options options_for(compile::target t, codegen::options o = {})
 {
     const compile::target_info& row = compile::info(t);
-    codegen::options o;
     if (row.four_channel_output) o.output_format = "rgba8";
     if (row.separate_samplers) o.model = binding_model::webgpu;
     return o;
+}
+
+// The plan of target `t`'s texts: `p` under options_for(t) (plan::with_options: the variant
+// is not planned again).
+inline codegen::plan plan_for(const codegen::plan& p, compile::target t)
+{
+    return p.with_options(options_for(t, p.source_options()));
 }
 
 // SPIR-V → WGSL for every source (WebGPU's binding model), in one batch.
@@ -41,9 +50,11 @@ inline std::vector<std::string> wgsl_texts(const std::vector<codegen::shader_sou
     return wgsl::from_spirv(jobs);
 }
 
-inline std::vector<std::string> emitted_texts(const variant& v, compile::target target, const codegen::options& o)
+// The texts of `p`'s shaders as target `t` takes them, in plan order: generate(plan_for(p, t)),
+// each compiled to `t` (WGSL: the whole plan in one batch).
+inline std::vector<std::string> emitted_texts(const codegen::plan& p, compile::target target)
 {
-    const std::vector<codegen::shader_source> sources = codegen::generate(v, o);
+    const std::vector<codegen::shader_source> sources = codegen::generate(plan_for(p, target));
     std::vector<std::string> out;
     if (target == compile::target::wgsl) {
         std::vector<std::vector<uint32_t>> spirv;
@@ -52,11 +63,6 @@ inline std::vector<std::string> emitted_texts(const variant& v, compile::target 
     }
     for (const codegen::shader_source& s : sources) out.push_back(compile::compile(s.glsl, s.stage, s.name, {target}).text.at(target));
     return out;
-}
-
-inline std::vector<std::string> emitted_texts(const variant& v, compile::target target)
-{
-    return emitted_texts(v, target, options_for(target));
 }
 
 } // namespace aogen

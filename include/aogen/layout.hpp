@@ -45,6 +45,7 @@
 #include "names.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cctype>
 #include <cstdint>
@@ -531,10 +532,24 @@ private:
 
 } // namespace detail
 
+namespace detail {
+
+// How many layouts compute() has made in this process. Not a feature: it lets a test pin that
+// a plan (codegen/plan.hpp) lays each uniform block out once, and that binding a planned chain
+// lays out nothing again.
+inline std::atomic<unsigned long>& computations()
+{
+    static std::atomic<unsigned long> count{0};
+    return count;
+}
+
+} // namespace detail
+
 // Lays out `block` under `r`. Throws aogen::error naming the member when the rule set
 // cannot express it.
 inline struct_layout compute(const block_desc& block, rules r)
 {
+    ++detail::computations();
     return detail::engine(block, r).run();
 }
 

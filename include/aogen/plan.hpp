@@ -4,11 +4,19 @@
 //   make_plan(v, o) validates a variant and the codegen options once, puts the variant in
 //   canonical form and works out everything its shaders are made of: the canonical name,
 //   the passes, and per shader (a pass's compute shader, or its vertex and fragment shaders)
-//   the #defines, the descriptors, the template files, the constants from params.hpp and the
-//   uniform block. Only make_plan makes a plan, so holding one means holding a valid variant:
-//   codegen::generate(plan), the Vulkan pipelines and the report take the plan and never
-//   validate again (a variant used to be validated 33 times per generate() of a 4-pass
-//   compute variant; now once — tests/core/test_codegen.cpp counts).
+//   the #defines, the descriptors, the template files, the constants from params.hpp, the
+//   uniform block and its std140 layout (laid out here, once), the workgroup and the pixels
+//   per invocation. Only make_plan makes a plan, so holding one means holding a valid variant:
+//   codegen::generate(plan), the runners (Vulkan, GL, Dawn), `aogen generate` and the report
+//   take the plan and never validate again (a variant used to be validated 33 times per
+//   generate() of a 4-pass compute variant; now once — tests/core/test_codegen.cpp counts).
+//   The plan is also what a chain reads at run time:
+//     plan.inputs(settings, w, h)   each pass's uniform bytes, written into the planned
+//                                   layouts (a frame loop lays nothing out), and the noise tile
+//     plan.target_size(w, h), plan.output_size(w, h)   the AO target's and the output's size
+//     plan.with_options(o)          the same plan under other options (a target's binding
+//                                   model or output format, diagnostics, a template reader):
+//                                   only the resources are worked out again
 //
 //   The parts one level down stay public for a caller that wants one of them —
 //   uniform_block(v, pass), resources(v, pass, stage, o), template_files(v, pass, stage),
@@ -26,7 +34,7 @@
 //     webgpu   textures as texture2D; a gathered one (u_depth, u_ao_input) with a sampler at
 //              the next binding. What the WGSL target is made from (aogen/wgsl.hpp).
 //
-// OPTIONS (codegen::options; the defaults are what generate(v) uses)
+// OPTIONS (codegen::options; the defaults are what make_plan(v) uses)
 //   output_format   the format qualifier of compute passes' output image:
 //                     r8       (default) one 8-bit unorm channel: Vulkan, desktop GL, D3D, Metal
 //                     rgba8    for OpenGL ES 3.1 and WebGPU (neither has an r8 storage
@@ -53,6 +61,7 @@
 //     for (const aogen::codegen::shader_plan& s : p.shaders())
 //         // s.pass, s.stage, s.name ("<variant>.ao.comp"), s.defines, s.resources, s.files, ...
 //     aogen::codegen::generate(p);                  // the GLSL (codegen.hpp)
+//     aogen::chain_inputs in = p.inputs(settings, w, h);   // every frame: its uniform bytes
 //
 // ERRORS
 //   aogen::error: an invalid variant (validate()), an output format not in the list above,
@@ -60,6 +69,7 @@
 #pragma once
 
 #include "bindings.hpp"
+#include "chain_inputs.hpp"
 #include "error.hpp"
 #include "layout.hpp"
 #include "names.hpp"
@@ -71,6 +81,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -348,10 +359,26 @@ struct shader_plan {
     std::vector<define> constants;   // from params.hpp (constants(v, pass))
     std::vector<std::string> files;  // the template files, in order
     layout::block_desc block;        // the uniform block (uniform_block(v, pass))
+    layout::struct_layout layout;    // `block` under std140, laid out once: what the shader
+                                     // declares and what plan::inputs writes, every frame
+    std::pair<int, int> workgroup{0, 0}; // a compute shader's workgroup (workgroup_of)
+    int pixels_per_invocation = 1;   // output pixels each invocation writes along x and y
 };
 
 class plan;
 plan make_plan(const variant& v, const options& o = {});
+
+namespace detail {
+
+// How many plans make_plan has made in this process. Not a feature: it lets a test pin that
+// `aogen generate` and the report plan each variant once.
+inline std::atomic<unsigned long>& plans_made()
+{
+    static std::atomic<unsigned long> count{0};
+    return count;
+}
+
+} // namespace detail
 
 // A variant planned once (see WHAT). Read-only; make_plan is the only way to make one.
 class plan {
@@ -362,10 +389,43 @@ public:
     const std::vector<pass_kind>& passes() const { return passes_; }
     // Per pass in passes() order: the compute shader, or the vertex then the fragment shader.
     const std::vector<shader_plan>& shaders() const { return shaders_; }
+    // The shader of pass `i` (passes()[i]) that binds its resources: the compute or fragment one.
+    const shader_plan& pass_shader(size_t i) const { return shaders_.at((i + 1) * per_pass() - 1); }
+
+    // The AO target for a G-buffer of w × h: its size, or half of it rounded up.
+    std::pair<int, int> target_size(int w, int h) const { return aogen::target_size(axes_, w, h); }
+    // What the chain returns for a G-buffer of w × h: the screen's size after an upsample pass.
+    std::pair<int, int> output_size(int w, int h) const { return aogen::output_size(axes_, w, h); }
+
+    // What the chain reads besides a w × h G-buffer with settings `s`: each pass's uniform
+    // bytes, written into the layout planned once (nothing is laid out again, frame after
+    // frame), and the noise tile (chain_inputs.hpp). aogen::error on a setting out of range.
+    chain_inputs inputs(const chain_settings& s, int w, int h) const
+    {
+        std::vector<const layout::struct_layout*> blocks;
+        for (size_t i = 0; i < passes_.size(); ++i) blocks.push_back(&pass_shader(i).layout);
+        const auto [tw, th] = target_size(w, h);
+        return aogen::detail::pack_inputs(axes_, s, tw, th, blocks);
+    }
+
+    // This plan under other options (a target's binding model or output format, diagnostics,
+    // a template reader): the variant is neither validated nor planned again; the options
+    // are validated, and what they decide -- each shader's resources -- is worked out anew.
+    plan with_options(const options& o) const
+    {
+        validate(o);
+        output_format_of(axes_, o);
+        plan p = *this;
+        p.options_ = o;
+        for (shader_plan& s : p.shaders_)
+            if (s.stage != shader_stage::vertex) s.resources = detail::resources_of(axes_, s.pass, s.stage, o);
+        return p;
+    }
 
 private:
     plan() = default;
     friend plan make_plan(const variant& v, const options& o);
+    size_t per_pass() const { return axes_.stage == pipeline_stage::compute ? 1 : 2; }
     variant axes_;
     std::string name_;
     options options_;
@@ -379,6 +439,7 @@ inline plan make_plan(const variant& v, const options& o)
     validate(v);
     validate(o);
     output_format_of(v, o); // the pair: a -bn variant's four channels
+    ++detail::plans_made();
     plan p;
     p.axes_ = canonical(v);
     p.name_ = aogen::detail::name_of(p.axes_);
@@ -396,6 +457,9 @@ inline plan make_plan(const variant& v, const options& o)
                 s.resources = detail::resources_of(p.axes_, pass, stage, o);
                 s.constants = detail::constants_of(p.axes_, pass);
                 s.block = detail::uniform_block_of(p.axes_, pass);
+                s.layout = layout::compute(s.block, layout::rules::std140);
+                s.pixels_per_invocation = pixels_per_invocation(pass, p.axes_.stage);
+                if (stage == shader_stage::compute) s.workgroup = workgroup_of(p.axes_, pass);
             }
             p.shaders_.push_back(std::move(s));
         }

@@ -47,7 +47,7 @@
 //     aogen::vec2 r = aogen::temporal::frame_rotation(v, frame_count);   // each frame
 //     float s = aogen::temporal::step_offset(aogen::temporal::sequence::van_der_corput, frame_count);
 //     // pack them with the pass's uniforms (uniforms::extras{r, finalize, s}), or set
-//     // chain_settings::frame and let inputs_for do it.
+//     // chain_settings::frame and let plan::inputs do it.
 //
 // WHY
 //   The rotation is computed here, on the host, with random::cos_sin_turns (the same bits on

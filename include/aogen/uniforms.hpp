@@ -59,19 +59,25 @@ inline layout::block_desc pointcloud_block()
 
 // BlurUniforms bytes; `target_size` is the AO target's size in pixels; of `e`, the finalize
 // settings (a blur pass turns no noise).
-inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, vec2 target_size, layout::rules rules, const extras& e = {})
+inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, vec2 target_size, const layout::struct_layout& block,
+                                      const extras& e = {})
 {
     validate(p);
     validate(e.finalize);
     require_finite_above("uniforms target width", target_size.x, 0, 65536);
     require_finite_above("uniforms target height", target_size.y, 0, 65536);
-    layout::writer w(layout::compute(blur_block(), rules));
+    layout::writer w(block);
     w.set("inv_proj", inverse(proj));
     w.set("texel_size", vec2{1.0f / target_size.x, 1.0f / target_size.y});
     w.set("raw_depth_k", p.raw_depth_k);
     w.set("linear_sharpness", p.linear_sharpness);
     w.set("albedo", e.finalize.albedo);
     return w.bytes();
+}
+// The same under `rules` (blur_block() laid out here).
+inline std::vector<uint8_t> pack_blur(const blur_params& p, const mat4& proj, vec2 target_size, layout::rules rules, const extras& e = {})
+{
+    return pack_blur(p, proj, target_size, layout::compute(blur_block(), rules), e);
 }
 
 // Seed 004's SsaoUniform bytes (the padding member stays zero).

@@ -125,14 +125,14 @@ void write_settings(layout::writer& w, const Members& members, const P& p, const
     for (const auto& m : members) w.set(m.name, m.value(p, e));
 }
 
-// A writer of `block` under `rules` with the camera members and `members`' values for `p`
-// and `e` written (a technique's pack_*: what is left to write is its arrays, if it has any).
-// `p` is validated by the caller.
+// A writer of `block`, a technique's block laid out (by a plan once, or by its pack_* under
+// the rules asked for), with the camera members and `members`' values for `p` and `e`
+// written: what is left to write is its arrays, if it has any. `p` is validated by the caller.
 template <class Members, class P>
-layout::writer settings_writer(const layout::block_desc& block, const Members& members, const P& p, const camera& cam,
-                               vec2 target_size, int noise_size, layout::rules rules, const extras& e)
+layout::writer settings_writer(const layout::struct_layout& block, const Members& members, const P& p, const camera& cam,
+                               vec2 target_size, int noise_size, const extras& e)
 {
-    layout::writer w(layout::compute(block, rules));
+    layout::writer w(block);
     detail::set_camera(w, cam, target_size, noise_size, e);
     write_settings(w, members, p, e);
     return w;

@@ -1,8 +1,8 @@
 // aogen/wgsl_dawn.hpp — a variant's WGSL executed on a real WebGPU implementation.
 //
-//     std::vector<std::string> texts = aogen::emitted_texts(v, aogen::compile::target::wgsl);
-//     auto [tw, th] = aogen::target_size(v, g.width, g.height);
-//     aogen::wgsl::dawn_result r = aogen::wgsl::run_variant_on_dawn(v, texts, g, aogen::inputs_for(v, settings, tw, th));
+//     const aogen::codegen::plan p = aogen::plan_for(aogen::codegen::make_plan(v), aogen::compile::target::wgsl);
+//     std::vector<std::string> texts = aogen::emitted_texts(p, aogen::compile::target::wgsl);
+//     aogen::wgsl::dawn_result r = aogen::wgsl::run_variant_on_dawn(p, texts, g, p.inputs(settings, g.width, g.height));
 //     // r.ao: output_size(v, ...) pixels, one byte each; r.device: "Dawn opengles: OpenGL version OpenGL ES 3.2 Mesa ..."
 //
 // Dawn (npm webgpu) runs the WGSL through Tint's GLSL ES writer on its OpenGL ES backend —
@@ -14,27 +14,31 @@
 
 #include "bindings.hpp"
 #include "chain_inputs.hpp"
+#include "plan.hpp"
 #include "wgsl.hpp"
 
 namespace aogen::wgsl {
 
-inline dawn_result run_variant_on_dawn(const variant& v, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
+// `p`: the plan the texts were emitted from; its passes, bindings and pixels per invocation
+// are what the runner binds and dispatches.
+inline dawn_result run_variant_on_dawn(const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
 {
+    const variant& v = p.axes();
     if (has_prefilter_pass(v))
         fail("wgsl on dawn", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");
-    const std::vector<pass_kind> ps = passes(v);
+    const std::vector<pass_kind>& ps = p.passes();
     const size_t per_pass = v.stage == pipeline_stage::compute ? 1 : 2; // codegen's order: vertex, then fragment
     if (texts.size() != ps.size() * per_pass || in.uniforms.size() != ps.size())
         fail("wgsl on dawn", to_name(v) + ": " + std::to_string(texts.size()) + " texts, " + std::to_string(in.uniforms.size()) + " uniform blocks",
              "valid: a text per shader and a block per pass, " + std::to_string(ps.size()) + " passes");
-    const auto [tw, th] = target_size(v, g.width, g.height);
+    const auto [tw, th] = p.target_size(g.width, g.height);
     std::vector<dawn_pass> dawn;
     for (size_t i = 0; i < ps.size(); ++i) {
         const bool screen = ps[i] == pass_kind::upsample;
         const std::string vertex = per_pass == 2 ? texts[2 * i] : std::string();
         const int albedo = reads_albedo(v, ps[i]) ? int(binding_of(family_of(ps[i]), resource_role::gbuffer_albedo, binding_model::webgpu)) : -1;
-        dawn.push_back({texts[per_pass * i + per_pass - 1], vertex, screen ? g.width : tw, screen ? g.height : th, pixels_per_invocation(ps[i], v.stage),
+        dawn.push_back({texts[per_pass * i + per_pass - 1], vertex, screen ? g.width : tw, screen ? g.height : th, p.pass_shader(i).pixels_per_invocation,
                         in.uniforms[i], albedo});
     }
     return run_on_dawn(g.width, g.height, g.depth, g.normals, g.albedo, in.noise_size, in.noise, dawn);

@@ -263,7 +263,12 @@ inline std::vector<float> evaluate_in_ao_pass(const aogen::variant& v, const std
     const aogen::codegen::template_reader read = [&entry](const std::string& path) {
         return path == "entry_compute.glsl" ? entry : aogen_test::template_under_test(path);
     };
-    const aogen::codegen::shader_source s = aogen::codegen::generate_shader(v, aogen::pass_kind::ao, aogen::shader_stage::compute, read);
+    aogen::codegen::options o;
+    o.templates = read;
+    const std::vector<aogen::codegen::shader_source> sources = aogen::codegen::generate(aogen::codegen::make_plan(v, o));
+    const auto ao = std::find_if(sources.begin(), sources.end(), [](const aogen::codegen::shader_source& s) { return s.pass == aogen::pass_kind::ao; });
+    if (ao == sources.end() || ao->stage != aogen::shader_stage::compute) aogen::fail("evaluate_in_ao_pass", aogen::to_name(v) + " has no compute AO pass", "valid: a compute variant");
+    const aogen::codegen::shader_source& s = *ao;
     const std::vector<uint32_t> words = aogen::compile::optimize_spirv(aogen::compile::glsl_to_spirv(s.glsl, aogen::shader_stage::compute, name), name);
     return run_main(words, expressions.size());
 }

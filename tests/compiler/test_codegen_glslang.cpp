@@ -117,7 +117,7 @@ struct totals {
 void check_variant(const variant& v, totals& t)
 {
     ++t.variants;
-    for (const shader_source& s : codegen::generate(v)) {
+    for (const shader_source& s : codegen::generate(codegen::make_plan(v))) {
         ++t.shaders;
         const compiled_shader& c = compile(s);
         INFO(s.name);
@@ -222,6 +222,14 @@ size_t line_count(const std::string& text)
 }
 
 } // namespace
+
+// Codegen options that read the templates from `dir` (codegen::options::templates).
+inline codegen::options reading(const fs::path& dir)
+{
+    codegen::options o;
+    o.templates = codegen::directory_reader(dir.string());
+    return o;
+}
 
 TEST_CASE("codegen+glslang: SSAO samples 8/16/32/64 x blur x full/half", "[codegen][glslang]")
 {
@@ -349,7 +357,7 @@ TEST_CASE("codegen+glslang: without the point-cloud fallback none of its code is
         with.normals = normal_source::reconstructed;
         variant without = with;
         without.point_cloud_fallback = false;
-        const std::vector<shader_source> sa = codegen::generate(with), sb = codegen::generate(without);
+        const std::vector<shader_source> sa = codegen::generate(codegen::make_plan(with)), sb = codegen::generate(codegen::make_plan(without));
         const shader_source& a = ao_shader(sa);
         const shader_source& b = ao_shader(sb);
         INFO(a.name << " vs " << b.name);
@@ -392,7 +400,7 @@ TEST_CASE("codegen+glslang: reconstructed normals declare no binding 2, G-buffer
                 v.tech = tech;
                 v.stage = stage;
                 v.normals = normals;
-                const std::vector<shader_source> sources = codegen::generate(v);
+                const std::vector<shader_source> sources = codegen::generate(codegen::make_plan(v));
                 const shader_source& s = ao_shader(sources);
                 INFO(s.name);
                 const compiled_shader& c = compile(s);
@@ -427,7 +435,7 @@ TEST_CASE("codegen+glslang: an error in a template names the template file and l
         const size_t broken_line = line_count(original) + 1;
         std::ofstream(dir / b.file, std::ios::binary) << original << "float broken = no_such_identifier;\n";
         bool reported = false;
-        for (const shader_source& s : codegen::generate(b.v, dir.string())) {
+        for (const shader_source& s : codegen::generate(codegen::make_plan(b.v, reading(dir)))) {
             if (std::find(s.files.begin(), s.files.end(), b.file) == s.files.end()) continue;
             const compiled_shader& c = compile(s);
             INFO(s.name << "\n" << c.log);
@@ -446,8 +454,8 @@ TEST_CASE("codegen+glslang: a template directory with the same files gives the s
 {
     const fs::path dir = write_templates("copy");
     for (const variant& v : default_matrix()) {
-        const std::vector<shader_source> a = codegen::generate(v);
-        const std::vector<shader_source> b = codegen::generate(v, dir.string());
+        const std::vector<shader_source> a = codegen::generate(codegen::make_plan(v));
+        const std::vector<shader_source> b = codegen::generate(codegen::make_plan(v, reading(dir)));
         REQUIRE(a.size() == b.size());
         for (size_t i = 0; i < a.size(); ++i) CHECK(a[i].glsl == b[i].glsl);
     }

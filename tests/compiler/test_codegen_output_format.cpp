@@ -101,7 +101,7 @@ TEST_CASE("codegen+glslang: every output format compiles, and the SPIR-V's stora
         o.output_format = std::string(format);
         size_t shaders = 0;
         for (const aogen::variant& v : compute_variants())
-            for (const shader_source& s : codegen::generate(v, o)) {
+            for (const shader_source& s : codegen::generate(codegen::make_plan(v, o))) {
                 ++shaders;
                 INFO(s.name << " " << format);
                 const aogen_test::spirv_result r = aogen_test::compile_glsl(s.glsl, language_of(s.stage));
@@ -125,7 +125,7 @@ TEST_CASE("codegen+compile: rgba8 compute variants compile to ESSL 310, which gl
     rgba8.output_format = "rgba8";
     size_t shaders = 0;
     for (const aogen::variant& v : compute_variants())
-        for (const shader_source& s : codegen::generate(v, rgba8)) {
+        for (const shader_source& s : codegen::generate(codegen::make_plan(v, rgba8))) {
             INFO(s.name);
             ++shaders;
             const cc::compiled out = cc::compile(s.glsl, s.stage, s.name, {cc::target::essl});
@@ -144,7 +144,7 @@ TEST_CASE("codegen+compile: rgba8 compute variants compile to ESSL 310, which gl
 
     // The default, r8, is refused for essl, naming the image; r32f and rgba16f are ES formats too.
     const aogen::variant v;
-    const std::vector<shader_source> r8 = codegen::generate(v);
+    const std::vector<shader_source> r8 = codegen::generate(codegen::make_plan(v));
     std::string refused;
     try {
         cc::compile(r8.front().glsl, r8.front().stage, r8.front().name, {cc::target::essl});
@@ -155,7 +155,7 @@ TEST_CASE("codegen+compile: rgba8 compute variants compile to ESSL 310, which gl
     for (const char* format : {"r32f", "rgba16f"}) {
         codegen::options o;
         o.output_format = format;
-        for (const shader_source& s : codegen::generate(v, o)) {
+        for (const shader_source& s : codegen::generate(codegen::make_plan(v, o))) {
             INFO(s.name << " " << format);
             const cc::compiled out = cc::compile(s.glsl, s.stage, s.name, {cc::target::essl});
             CHECK(reflect_storage_image(out.spirv).format == spirv_format(format));

@@ -49,7 +49,7 @@ std::vector<float> evaluate(const std::vector<std::string>& expressions)
 {
     variant v;
     v.tech = technique::gtao;
-    REQUIRE(codegen::generate(v)[0].glsl.find("ao_half ao_gtao_slice_integral(") != std::string::npos); // ao_half: float here (no fp16)
+    REQUIRE(codegen::generate(codegen::make_plan(v))[0].glsl.find("ao_half ao_gtao_slice_integral(") != std::string::npos); // ao_half: float here (no fp16)
     return aogen_test::evaluate_in_ao_pass(v, expressions, "gtao slice test");
 }
 

@@ -60,7 +60,7 @@ TEST_CASE("portable math: no pass of any technique calls the driver's acos, atan
                              "gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16", "vbao-2x3-half-box-gbufworld-std-persp-cs",
                              "vbao-2x2-full-noblur-recon-std-persp-fs", "ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest"}) {
         const variant v = variant_from_name(name);
-        for (const codegen::shader_source& s : codegen::generate(v, aogen_test::under_test())) {
+        for (const codegen::shader_source& s : codegen::generate(codegen::make_plan(v, aogen_test::under_test()))) {
             INFO(s.name);
             CHECK(driver_dependent_calls(compile::glsl_to_spirv(s.glsl, s.stage, s.name)).empty());
             ++shaders;

@@ -88,7 +88,7 @@ TEST_CASE("bent normals: a -bn variant writes four channels: r8 widens to rgba8 
         CHECK(output_formats(v, o) == std::vector<std::string>{"r32f", kept, kept, kept});
     }
     // What the shader declares follows: AO_OUTPUT_FORMAT rgba8 in every AO pass's source.
-    for (const codegen::shader_source& s : codegen::generate(v))
+    for (const codegen::shader_source& s : codegen::generate(codegen::make_plan(v)))
         if (s.pass != pass_kind::prefilter) CHECK(s.glsl.find("#define AO_OUTPUT_FORMAT rgba8\n") != std::string::npos);
     o.output_format = "r32f";
     CHECK_THROWS_WITH(codegen::make_plan(v, o), Catch::Contains("r32f") && Catch::Contains("-bn") && Catch::Contains("valid with -bn"));

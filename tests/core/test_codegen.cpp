@@ -92,8 +92,8 @@ TEST_CASE("codegen: same variant, same bytes, a pass's source depends on its def
     std::set<std::string> sources;
     const std::vector<variant> vs = broad_set();
     for (const variant& v : vs) {
-        const std::vector<shader_source> a = codegen::generate(v);
-        const std::vector<shader_source> b = codegen::generate(variant_from_name(to_name(v)));
+        const std::vector<shader_source> a = codegen::generate(codegen::make_plan(v));
+        const std::vector<shader_source> b = codegen::generate(codegen::make_plan(variant_from_name(to_name(v))));
         REQUIRE(a.size() == b.size());
         for (size_t i = 0; i < a.size(); ++i) {
             CHECK(a[i].glsl == b[i].glsl);
@@ -116,7 +116,7 @@ TEST_CASE("codegen: same variant, same bytes, a pass's source depends on its def
 TEST_CASE("codegen: passes, stages, names and order", "[codegen]")
 {
     for (const variant& v : broad_set()) {
-        const std::vector<shader_source> s = codegen::generate(v);
+        const std::vector<shader_source> s = codegen::generate(codegen::make_plan(v));
         const std::vector<pass_kind> p = passes(v);
         const size_t per_pass = v.stage == pipeline_stage::compute ? 1 : 2;
         REQUIRE(s.size() == p.size() * per_pass);
@@ -133,18 +133,18 @@ TEST_CASE("codegen: passes, stages, names and order", "[codegen]")
         }
     }
     variant v;
-    CHECK(codegen::generate(v).size() == 4); // ao, blur_x, blur_y, upsample
+    CHECK(codegen::generate(codegen::make_plan(v)).size() == 4); // ao, blur_x, blur_y, upsample
     v.blur = blur_mode::box;
     v.stage = pipeline_stage::fragment;
-    CHECK(codegen::generate(v).size() == 6); // (vertex, fragment) for ao, blur_box, upsample
+    CHECK(codegen::generate(codegen::make_plan(v)).size() == 6); // (vertex, fragment) for ao, blur_box, upsample
     v.upsample = upsample_mode::nearest;
-    CHECK(codegen::generate(v).size() == 4);
+    CHECK(codegen::generate(codegen::make_plan(v)).size() == 4);
 }
 
 TEST_CASE("codegen: every #define of the pass is in its source, before the templates", "[codegen]")
 {
     for (const variant& v : broad_set())
-        for (const shader_source& s : codegen::generate(v)) {
+        for (const shader_source& s : codegen::generate(codegen::make_plan(v))) {
             INFO(s.name);
             const std::string head = preamble(s.glsl);
             if (s.stage == shader_stage::vertex) {
@@ -206,20 +206,20 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
     };
     variant v;
     v.samples = 32;
-    std::vector<shader_source> s = codegen::generate(v);
+    std::vector<shader_source> s = codegen::generate(codegen::make_plan(v));
     CHECK(s[0].glsl.find("#line 1 \"aogen:SsaoUniforms\"\n" + decl(uniforms::ssao_block(32))) != std::string::npos);
     CHECK(s[1].glsl.find("#line 1 \"aogen:BlurUniforms\"\n" + decl(uniforms::blur_block())) != std::string::npos);
     v.tech = technique::gtao;
-    s = codegen::generate(v);
+    s = codegen::generate(codegen::make_plan(v));
     CHECK(s[0].glsl.find(decl(uniforms::gtao_block())) != std::string::npos);
     v.tech = technique::vbao;
-    s = codegen::generate(v);
+    s = codegen::generate(codegen::make_plan(v));
     CHECK(s[0].glsl.find("#line 1 \"aogen:VbaoUniforms\"\n" + decl(uniforms::vbao_block())) != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"vbao.glsl\"") != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"gtao.glsl\"") == std::string::npos);
     v.tech = technique::sao;
     v.samples = 12;
-    s = codegen::generate(v);
+    s = codegen::generate(codegen::make_plan(v));
     CHECK(s[0].glsl.find("#line 1 \"aogen:SaoUniforms\"\n" + decl(uniforms::sao_block(12))) != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"sao.glsl\"") != std::string::npos);
     CHECK(s[0].glsl.find("#line 1 \"ssao.glsl\"") == std::string::npos);
@@ -241,7 +241,7 @@ TEST_CASE("codegen: the uniform block is declare()'s std140 block at set 0, bind
 TEST_CASE("codegen: template files in order, each after #line 1 \"<file>\"", "[codegen]")
 {
     for (const variant& v : broad_set())
-        for (const shader_source& s : codegen::generate(v)) {
+        for (const shader_source& s : codegen::generate(codegen::make_plan(v))) {
             INFO(s.name);
             REQUIRE_FALSE(s.files.empty());
             size_t at = 0;
@@ -318,7 +318,7 @@ TEST_CASE("codegen: the webgpu binding model separates textures and samplers, at
           std::vector<row>{{0, k::uniform_buffer, "uniforms"}, {1, k::sampled_image, "depth"}, {2, k::sampler, "depth_sampler"},
                            {3, k::sampled_image, "ao_input"}, {4, k::sampler, "ao_input_sampler"}, {5, k::storage_image, "output"}});
     // The GLSL declares exactly these, and the templates' names stay usable.
-    const std::string glsl = codegen::generate(v, o).front().glsl;
+    const std::string glsl = codegen::generate(codegen::make_plan(v, o)).front().glsl;
     CHECK(glsl.find("layout(set = 0, binding = 1) uniform texture2D u_depth_texture;") != std::string::npos);
     CHECK(glsl.find("layout(set = 0, binding = 2) uniform sampler u_depth_sampler;\n#define u_depth sampler2D(u_depth_texture, u_depth_sampler)") !=
           std::string::npos);
@@ -345,7 +345,7 @@ TEST_CASE("codegen: the fullscreen vertex shader is one text for every pass and 
 {
     std::set<std::string> texts;
     for (const variant& v : broad_set())
-        for (const shader_source& s : codegen::generate(v))
+        for (const shader_source& s : codegen::generate(codegen::make_plan(v)))
             if (s.stage == shader_stage::vertex) {
                 texts.insert(s.glsl);
                 CHECK(s.resources.empty());
@@ -373,7 +373,7 @@ TEST_CASE("codegen: embedded templates equal the source tree's", "[codegen]")
     // Every file any variant uses is embedded.
     std::set<std::string> used;
     for (const variant& v : broad_set())
-        for (const shader_source& s : codegen::generate(v)) used.insert(s.files.begin(), s.files.end());
+        for (const shader_source& s : codegen::generate(codegen::make_plan(v))) used.insert(s.files.begin(), s.files.end());
     std::set<std::string> have;
     for (const auto& t : embedded) have.insert(t.path);
     CHECK(used == have);
@@ -382,7 +382,9 @@ TEST_CASE("codegen: embedded templates equal the source tree's", "[codegen]")
 TEST_CASE("codegen: a directory reader normalises CRLF and names a missing file", "[codegen]")
 {
     const std::string dir = AOGEN_TEMPLATE_DIR;
-    CHECK_THAT(error_of([&] { codegen::generate(variant{}, dir + "/no-such-dir"); }),
+    codegen::options missing;
+    missing.templates = codegen::directory_reader(dir + "/no-such-dir");
+    CHECK_THAT(error_of([&] { codegen::generate(codegen::make_plan(variant{}, missing)); }),
                Contains("template 'common/core.glsl': cannot read " + dir + "/no-such-dir/common/core.glsl"));
     CHECK_THAT(error_of([] { codegen::embedded_template("nope.glsl"); }),
                Contains("template 'nope.glsl': is not among the embedded templates (valid: blur_bilateral.glsl, "));
@@ -394,27 +396,28 @@ TEST_CASE("codegen: a directory reader normalises CRLF and names a missing file"
         return out;
     };
     // (generate() itself does not normalise a custom reader; directory_reader does.)
-    CHECK(codegen::generate(variant{}, lf)[0].glsl != codegen::generate(variant{}, crlf)[0].glsl);
+    codegen::options with_lf, with_crlf;
+    with_lf.templates = lf, with_crlf.templates = crlf;
+    CHECK(codegen::generate(codegen::make_plan(variant{}, with_lf))[0].glsl != codegen::generate(codegen::make_plan(variant{}, with_crlf))[0].glsl);
 }
 
 TEST_CASE("codegen: invalid input is an aogen::error", "[codegen]")
 {
     variant v;
     v.samples = 0;
-    CHECK_THAT(error_of([&] { codegen::generate(v); }), Contains("ssao samples: 0 is out of range (valid: 1..256)"));
+    CHECK_THAT(error_of([&] { codegen::generate(codegen::make_plan(v)); }), Contains("ssao samples: 0 is out of range (valid: 1..256)"));
     v = variant{};
     v.tech = technique::gtao;
     v.point_cloud_fallback = true;
-    CHECK_THAT(error_of([&] { codegen::generate(v); }), Contains("point-cloud fallback"));
+    CHECK_THAT(error_of([&] { codegen::generate(codegen::make_plan(v)); }), Contains("point-cloud fallback"));
     v = variant{};
     CHECK_THAT(error_of([&] { codegen::resources(v, pass_kind::blur_box, shader_stage::compute); }),
                Contains("pass: blur_box is not a pass of ssao-s16-half-bilateral-gbufworld-std-persp-cs (valid: ao, blur_x, blur_y, upsample)"));
     CHECK_THAT(error_of([&] { codegen::template_files(v, pass_kind::ao, shader_stage::fragment); }),
                Contains("shader stage: fragment is not a stage of a compute variant (valid: compute)"));
     v.stage = pipeline_stage::fragment;
-    CHECK_THAT(error_of([&] { codegen::generate_shader(v, pass_kind::ao, shader_stage::compute, codegen::embedded_template); }),
-               Contains("valid: vertex, fragment"));
-    CHECK_THAT(error_of([&] { codegen::generate_shader(v, pass_kind::ao, static_cast<shader_stage>(7), codegen::embedded_template); }),
+    CHECK_THAT(error_of([&] { codegen::resources(v, pass_kind::ao, shader_stage::compute); }), Contains("valid: vertex, fragment"));
+    CHECK_THAT(error_of([&] { codegen::resources(v, pass_kind::ao, static_cast<shader_stage>(7)); }),
                Contains("shader stage: 7 is not a valid value"));
 }
 
@@ -422,15 +425,15 @@ TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute s
 {
     const std::string dir = AOGEN_TEMPLATE_DIR;
     for (const variant& v : broad_set()) {
-        const std::vector<shader_source> defaults = codegen::generate(v);
+        const std::vector<shader_source> defaults = codegen::generate(codegen::make_plan(v));
         // The default options are the old signatures' output, byte for byte.
-        const std::vector<shader_source> explicit_default = codegen::generate(v, codegen::options{});
+        const std::vector<shader_source> explicit_default = codegen::generate(codegen::make_plan(v, codegen::options{}));
         REQUIRE(defaults.size() == explicit_default.size());
         for (size_t i = 0; i < defaults.size(); ++i) CHECK(defaults[i].glsl == explicit_default[i].glsl);
         for (const char* format : {"r8", "rgba8", "r32f", "rgba16f"}) {
             codegen::options o;
             o.output_format = format;
-            const std::vector<shader_source> s = codegen::generate(v, o);
+            const std::vector<shader_source> s = codegen::generate(codegen::make_plan(v, o));
             REQUIRE(s.size() == defaults.size());
             for (size_t i = 0; i < s.size(); ++i) {
                 INFO(s[i].name << " " << format);
@@ -462,24 +465,22 @@ TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute s
                 for (const codegen::resource& r : codegen::resources(v, s[i].pass, s[i].stage, o))
                     if (r.role == resource_role::output) CHECK(r.format == format);
             }
-            // Every overload passes the options on.
-            const std::vector<shader_source> from_dir = codegen::generate(v, dir, o);
-            const std::vector<shader_source> from_cdir = codegen::generate(v, dir.c_str(), o);
-            const std::vector<shader_source> from_reader = codegen::generate(v, codegen::directory_reader(dir), o);
-            REQUIRE(from_dir.size() == s.size());
-            REQUIRE(from_cdir.size() == s.size());
-            REQUIRE(from_reader.size() == s.size());
+            // A template reader and a plan moved to these options carry them too.
+            codegen::options from_dir = o;
+            from_dir.templates = codegen::directory_reader(dir);
+            const std::vector<shader_source> read = codegen::generate(codegen::make_plan(v, from_dir));
+            const std::vector<shader_source> moved = codegen::generate(codegen::make_plan(v).with_options(o));
+            REQUIRE(read.size() == s.size());
+            REQUIRE(moved.size() == s.size());
             for (size_t i = 0; i < s.size(); ++i) {
-                CHECK(from_dir[i].glsl == s[i].glsl);
-                CHECK(from_cdir[i].glsl == s[i].glsl);
-                CHECK(from_reader[i].glsl == s[i].glsl);
-                CHECK(codegen::generate_shader(v, s[i].pass, s[i].stage, codegen::embedded_template, o).glsl == s[i].glsl);
+                CHECK(read[i].glsl == s[i].glsl);
+                CHECK(moved[i].glsl == s[i].glsl);
             }
         }
     }
     // Codegen declares the output image with the define (bindings.hpp's binding), and the
     // entry point declares nothing of its own.
-    CHECK(codegen::generate(variant{}).front().glsl.find("layout(set = 0, binding = 4, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;") !=
+    CHECK(codegen::generate(codegen::make_plan(variant{})).front().glsl.find("layout(set = 0, binding = 4, AO_OUTPUT_FORMAT) uniform writeonly image2D u_output;") !=
           std::string::npos);
     const std::string entry = codegen::embedded_template("entry_compute.glsl");
     CHECK(entry.find("uniform writeonly image2D") == std::string::npos);
@@ -497,9 +498,9 @@ TEST_CASE("codegen: an output format not in the list is an aogen::error naming t
         variant fragment;
         fragment.stage = pipeline_stage::fragment;
         const std::string expected = "output format: '" + std::string(format) + "' is not a storage image format aogen writes " + valid;
-        CHECK(error_of([&] { codegen::generate(compute, o); }) == expected);
-        CHECK(error_of([&] { codegen::generate(fragment, o); }) == expected); // validated even where unused
-        CHECK(error_of([&] { codegen::generate(compute, std::string(AOGEN_TEMPLATE_DIR), o); }) == expected);
+        CHECK(error_of([&] { codegen::generate(codegen::make_plan(compute, o)); }) == expected);
+        CHECK(error_of([&] { codegen::generate(codegen::make_plan(fragment, o)); }) == expected); // validated even where unused
+        CHECK(error_of([&] { codegen::make_plan(compute).with_options(o); }) == expected);
         CHECK(error_of([&] { codegen::resources(compute, pass_kind::ao, shader_stage::compute, o); }) == expected);
         CHECK(error_of([&] { codegen::validate(o); }) == expected);
     }
@@ -514,7 +515,7 @@ TEST_CASE("codegen: a plan validates its variant once, and generating from it ne
         INFO(name);
         const variant v = variant_from_name(name);
         const unsigned long before = aogen::detail::validations();
-        const std::vector<shader_source> direct = codegen::generate(v);
+        const std::vector<shader_source> direct = codegen::generate(codegen::make_plan(v));
         CHECK(aogen::detail::validations() - before == 1);
 
         const codegen::plan p = codegen::make_plan(v);
@@ -554,12 +555,61 @@ TEST_CASE("codegen: a plan holds what the public part functions return", "[codeg
                 CHECK(planned == direct);
                 CHECK(s.constants.size() == codegen::constants(v, pass).size());
                 CHECK(s.block.root.name == codegen::uniform_block(v, pass).root.name);
+                const layout::struct_layout l = layout::compute(s.block, layout::rules::std140);
+                CHECK(s.layout.name == l.name);
+                CHECK(s.layout.size == l.size);
+                CHECK(s.layout.members.size() == l.members.size());
+                CHECK(s.pixels_per_invocation == pixels_per_invocation(pass, v.stage));
+                CHECK(s.workgroup == (stage == shader_stage::compute ? workgroup_of(v, pass) : std::pair<int, int>{0, 0}));
             }
         CHECK(i == p.shaders().size());
     }
     variant bad;
     bad.samples = 0;
     CHECK_THAT(error_of([&] { codegen::make_plan(bad); }), Contains("ssao samples"));
+}
+
+TEST_CASE("codegen: a plan lays each uniform block out once, and generating, other options and a frame loop's inputs lay out nothing again",
+          "[codegen][plan]")
+{
+    // Before the plan carried its layouts, every frame's inputs laid each pass's block out
+    // again (every uniforms::pack_* called layout::compute), and generate() once more per shader.
+    chain_settings s;
+    s.camera = {mat4{}, perspective(1, 1, 1, 3)};
+    codegen::options rgba8;
+    rgba8.output_format = "rgba8";
+    for (const char* name : {"ssao-s16-half-bilateral-gbufworld-std-persp-cs", "gtao-2x3-half-denoise-recon-rev-persp-fs",
+                             "sao-s12-full-box-gbufview-std-persp-cs-mip4", "vbao-2x2-full-noblur-gbufworld-std-persp-cs"}) {
+        INFO(name);
+        const variant v = variant_from_name(name);
+        const unsigned long before = layout::detail::computations(), plans = codegen::detail::plans_made();
+        const codegen::plan p = codegen::make_plan(v);
+        CHECK(codegen::detail::plans_made() - plans == 1);
+        CHECK(layout::detail::computations() - before == passes(v).size()); // one std140 layout per pass
+        const unsigned long planned = layout::detail::computations();
+        const std::vector<shader_source> sources = codegen::generate(p);
+        const codegen::plan moved = p.with_options(rgba8);
+        CHECK(codegen::generate(moved).size() == sources.size());
+        std::vector<std::vector<uint8_t>> first;
+        for (uint32_t frame = 0; frame < 8; ++frame) {
+            s.frame = frame;
+            const chain_inputs in = p.inputs(s, 160, 90);
+            REQUIRE(in.uniforms.size() == passes(v).size());
+            if (frame == 0) first = in.uniforms;
+        }
+        CHECK(layout::detail::computations() == planned);
+        CHECK(codegen::detail::plans_made() - plans == 1); // with_options plans nothing again
+        // The bytes are the public packers' (which lay their block out themselves: the counter counts).
+        const auto [tw, th] = p.target_size(160, 90);
+        const vec2 size{float(tw), float(th)};
+        s.frame = 0;
+        for (size_t i = 0; i < p.passes().size(); ++i) {
+            if (p.passes()[i] == pass_kind::ao) continue;
+            const unsigned long packing = layout::detail::computations();
+            CHECK(uniforms::pack_blur(s.blur, s.camera.proj, size, layout::rules::std140, {{1, 0}, s.finalize, 0}) == first[i]);
+            CHECK(layout::detail::computations() - packing == 1);
+        }
+    }
 }
 
 } // namespace unity_test_codegen

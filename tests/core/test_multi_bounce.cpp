@@ -106,12 +106,13 @@ TEST_CASE("multi-bounce: the albedo is 0 to 1 and reaches every pass's block", "
     chain_settings s;
     s.camera = {mat4{}, perspective(1, 1, 1, 3)};
     s.finalize.albedo = 0.75f;
-    const chain_inputs in = inputs_for(v, s, 80, 45);
+    const codegen::plan p = codegen::make_plan(v);
+    const chain_inputs in = p.inputs(s, 80, 45);
     REQUIRE(in.uniforms.size() == passes(v).size()); // ao, blur_x, blur_y, upsample
     CHECK(float_at(in.uniforms[0], uniforms::gtao_block(), "albedo") == 0.75f);
     for (size_t p = 1; p < in.uniforms.size(); ++p) CHECK(float_at(in.uniforms[p], uniforms::blur_block(), "albedo") == 0.75f);
     s.finalize.albedo = 2;
-    CHECK_THROWS_WITH(inputs_for(v, s, 80, 45), Catch::Contains("finalize.albedo: 2 is out of range (valid: 0..1)"));
+    CHECK_THROWS_WITH(p.inputs(s, 80, 45), Catch::Contains("finalize.albedo: 2 is out of range (valid: 0..1)"));
 }
 
 TEST_CASE("multi-bounce: only a -mbg chain's last pass declares the albedo, at its fixed binding", "[multi_bounce]")

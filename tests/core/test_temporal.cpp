@@ -173,9 +173,9 @@ TEST_CASE("temporal: chain_settings' frame reaches the AO pass's frame_rotation 
         const layout::block_desc block = codegen::uniform_block(v, pass_kind::ao);
         chain_settings s;
         s.camera = {mat4{}, perspective(1, 1, 1, 3)};
-        const chain_inputs still = inputs_for(v, s, 80, 45);
+        const chain_inputs still = codegen::make_plan(v).inputs(s, 80, 45);
         s.frame = 5;
-        const chain_inputs moved = inputs_for(v, s, 80, 45);
+        const chain_inputs moved = codegen::make_plan(v).inputs(s, 80, 45);
         const size_t at = offset_of(block, "frame_rotation");
         const vec2 expected = temporal::frame_rotation(v, 5);
         CHECK(float_at(still.uniforms[0], at) == 1.0f);

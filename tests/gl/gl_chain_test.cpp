@@ -43,8 +43,8 @@ void compare_one(vulkan::context& vk, gl::context& gl, const variant& v, compile
                  const vulkan::gbuffer& g, const vulkan::chain_settings& s)
 {
     const vulkan::chain_result expected = chain_under_test(vk, v).run(g, s);
-    const auto [tw, th] = target_size(v, g.width, g.height);
-    const gl::chain_result got = gl::run(gl, v, emitted_texts(v, target, under_test(o)), g, inputs_for(v, s, tw, th), o);
+    const codegen::plan p = codegen::make_plan(v, under_test(o));
+    const gl::chain_result got = gl::run(gl, plan_for(p, target), emitted_texts(p, target), g, p.inputs(s, g.width, g.height));
     REQUIRE(got.width == expected.width);
     REQUIRE(got.height == expected.height);
     const ao_difference d = difference_of(got.ao, expected.ao);

@@ -43,9 +43,10 @@ TEST_CASE("report: every default-matrix variant's floors compile, bind like the 
     std::map<std::string, uint32_t> compiled;
     for (const aogen::variant& v : aogen::default_matrix()) {
         INFO(aogen::to_name(v));
-        const std::vector<aogen::codegen::shader_source> fetch = aogen_report::floor_sources(v, floor_kind::fetch);
-        const std::vector<aogen::codegen::shader_source> bandwidth = aogen_report::floor_sources(v, floor_kind::bandwidth);
-        const std::vector<aogen::codegen::shader_source> twin = aogen::codegen::generate(aogen_report::floor_variant(v));
+        const aogen::codegen::plan p = aogen::codegen::make_plan(v);
+        const std::vector<aogen::codegen::shader_source> fetch = aogen_report::floor_of(p, floor_kind::fetch).sources;
+        const std::vector<aogen::codegen::shader_source> bandwidth = aogen_report::floor_of(p, floor_kind::bandwidth).sources;
+        const std::vector<aogen::codegen::shader_source> twin = aogen::codegen::generate(aogen::codegen::make_plan(aogen_report::floor_variant(v)));
         REQUIRE(fetch.size() == twin.size());
         REQUIRE(bandwidth.size() == twin.size());
         REQUIRE(twin.size() == aogen::passes(v).size());
@@ -78,12 +79,12 @@ TEST_CASE("report: a floor replaces exactly the shading templates")
     // The variant's own depth and entry code stay in the floor.
     aogen::variant v;
     v.tech = aogen::technique::gtao;
-    const std::vector<aogen::codegen::shader_source> floor = aogen_report::floor_sources(v);
+    const std::vector<aogen::codegen::shader_source> floor = aogen_report::floor_of(aogen::codegen::make_plan(v)).sources;
     CHECK(floor[0].glsl.find(aogen::codegen::embedded_template("common/depth.glsl")) != std::string::npos);
     CHECK(floor[0].glsl.find(aogen::codegen::embedded_template("gtao.glsl")) == std::string::npos);
     // A fragment variant's floor is the compute kernel of the same axes.
     v.stage = aogen::pipeline_stage::fragment;
-    CHECK(aogen_report::floor_sources(v)[0].stage == aogen::shader_stage::compute);
+    CHECK(aogen_report::floor_of(aogen::codegen::make_plan(v)).sources[0].stage == aogen::shader_stage::compute);
 }
 
 } // namespace unity_fetch_floor_test

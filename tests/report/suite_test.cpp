@@ -7,7 +7,9 @@
 // plant three (ctest -L mutants) and this test must fail on each.
 #include "mutants/mutants.hpp"
 
+#include <aogen_report/run.hpp>
 #include <aogen_report/suite.hpp>
+#include <aogen/matrix.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -30,6 +32,30 @@ aogen_report::suite_data run_scale_case(const std::string& variant)
 }
 
 } // namespace
+
+TEST_CASE("report: the report plans each variant once: its diagnostic build and its floors are that plan under other options", "[report][plan]")
+{
+    // Before, the report planned each variant four times (shipped, diagnostic, two floors).
+    // A fragment or point-cloud variant's floors are the compute shaders of its compute twin,
+    // another variant: that one is planned once too, for both floors.
+    size_t twins = 0;
+    for (const aogen::variant& v : aogen::default_matrix()) {
+        INFO(aogen::to_name(v));
+        const unsigned long before = aogen::codegen::detail::plans_made();
+        const aogen_report::detail::generated_variant g = aogen_report::detail::generate_variant(v, true);
+        const bool own_twin = aogen_report::floor_variant(v) == v;
+        twins += !own_twin;
+        CHECK(aogen::codegen::detail::plans_made() - before == (own_twin ? 1u : 2u));
+        CHECK(g.diagnostic.name() == g.shipped.name());
+        CHECK(g.diagnostic.source_options().diagnostics);
+        REQUIRE(g.floors.size() == 2);
+        CHECK(g.floors[0].sources.size() == g.floors[1].sources.size());
+        const unsigned long twin_only = aogen::codegen::detail::plans_made();
+        aogen_report::detail::generate_variant(v, false);
+        CHECK(aogen::codegen::detail::plans_made() - twin_only == 1); // no floors: one plan
+    }
+    CHECK(twins > 0); // the matrix has fragment variants: both cases were seen
+}
 
 TEST_CASE("stability: each technique gives the same AO, pixel by pixel, at 1e-6 ... 1e6 of the scene's size", "[suite]")
 {

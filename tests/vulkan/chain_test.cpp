@@ -70,7 +70,7 @@ TEST_CASE("vulkan: half resolution of 101x61 is 51x31, every pixel written, fini
             v.upsample = up;
             INFO(to_name(v));
             const int w = up == upsample_mode::nearest ? 51 : 101, h = up == upsample_mode::nearest ? 31 : 61;
-            CHECK(vulkan::output_size(v, W, H) == std::pair<int, int>{w, h});
+            CHECK(codegen::make_plan(v).output_size(W, H) == std::pair<int, int>{w, h});
             vulkan::chain c = chain_under_test(*ctx, v);
             const vulkan::chain_result zero = c.run(g, settings_for(proj), {0.0f});
             const vulkan::chain_result one = c.run(g, settings_for(proj), {1.0f});

@@ -46,7 +46,7 @@ std::vector<uint8_t> with_gtao_member(std::vector<uint8_t> block, const char* na
 // Target pixels of `v` that read geometry (not background) on the G-buffer `g`.
 size_t geometry_pixels(const variant& v, const vulkan::gbuffer& g)
 {
-    const auto [TW, TH] = vulkan::target_size(v, g.width, g.height);
+    const auto [TW, TH] = target_size(v, g.width, g.height);
     size_t n = 0;
     for (int y = 0; y < TH; ++y)
         for (int x = 0; x < TW; ++x) n += g.depth[full_pixel_of(v, g.width, g.height, x, y)] < 1.0f;
@@ -56,12 +56,11 @@ size_t geometry_pixels(const variant& v, const vulkan::gbuffer& g)
 // Runs the gtao variant `v` (diagnostic build) on the crease with its AO pass's strength replaced.
 vulkan::chain_result run_with_strength(vulkan::context& ctx, const variant& v, const crease_setup& c, float strength)
 {
-    const vulkan::chain diagnostic = chain_under_test(ctx, v, {true});
+    const vulkan::chain diagnostic = chain_under_test(ctx, v, true);
     const vulkan::gpu_gbuffer g(ctx, c.host);
-    const auto [TW, TH] = vulkan::target_size(v, c.W, c.H);
-    vulkan::chain_inputs in = vulkan::inputs_for(v, settings_for(c.proj), TW, TH);
+    vulkan::chain_inputs in = diagnostic.plan().inputs(settings_for(c.proj), c.W, c.H);
     in.uniforms[0] = with_gtao_member(in.uniforms[0], "strength", strength);
-    return vulkan::bound_chain(ctx, diagnostic.passes(), g, in, TW, TH).run_once();
+    return vulkan::bound_chain(ctx, diagnostic.passes(), g, in).run_once();
 }
 
 } // namespace
@@ -78,11 +77,11 @@ TEST_CASE("vulkan: a diagnostic chain gives the shipped AO and clean raw counts 
             v.stage = stage;
             INFO(to_name(v));
             if (stage == pipeline_stage::fragment && !ctx->fragment_stores()) {
-                CHECK_THROWS_AS(vulkan::chain(*ctx, v, {true}), aogen::error);
+                CHECK_THROWS_AS(vulkan::chain(*ctx, plan_under_test(v, true)), aogen::error);
                 continue;
             }
             const vulkan::chain_result shipped = chain_under_test(*ctx, v).run(c.host, settings_for(c.proj));
-            const vulkan::chain_result diagnostic = chain_under_test(*ctx, v, {true}).run(c.host, settings_for(c.proj));
+            const vulkan::chain_result diagnostic = chain_under_test(*ctx, v, true).run(c.host, settings_for(c.proj));
             CHECK(shipped.raw.empty());
             CHECK(diagnostic.ao == shipped.ao);
             REQUIRE(diagnostic.raw.size() == passes(v).size());

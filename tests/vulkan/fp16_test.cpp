@@ -50,7 +50,7 @@ TEST_CASE("vulkan: an fp16 variant's AO pass is 16-bit SPIR-V, its twin's is not
         INFO(to_name(v));
         for (bool fp16 : {true, false}) {
             v.fp16 = fp16;
-            for (const codegen::shader_source& s : codegen::generate(v, under_test())) {
+            for (const codegen::shader_source& s : codegen::generate(codegen::make_plan(v, under_test()))) {
                 INFO(s.name);
                 // The AO pass only: the blurs and the vertex shader stay 32-bit.
                 const bool ao_shader = s.pass == pass_kind::ao && s.stage != shader_stage::vertex;

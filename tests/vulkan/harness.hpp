@@ -88,12 +88,20 @@ inline vulkan::context* shared_context()
     return ctx.get();
 }
 
-// `v`'s chain with its templates read through template_under_test (mutants/mutants.hpp):
-// the embedded ones, or with AOGEN_MUTANT's fault planted.
-inline vulkan::chain chain_under_test(vulkan::context& ctx, const variant& v, vulkan::chain_options o = {})
+// `v`'s plan with its templates read through template_under_test (mutants/mutants.hpp):
+// the embedded ones, or with AOGEN_MUTANT's fault planted; `diagnostics`: each pass also
+// stores its raw value (codegen::options::diagnostics).
+inline codegen::plan plan_under_test(const variant& v, bool diagnostics = false)
 {
-    o.templates = template_under_test;
-    return vulkan::chain(ctx, v, o);
+    codegen::options o = under_test();
+    o.diagnostics = diagnostics;
+    return codegen::make_plan(v, o);
+}
+
+// `v`'s chain from plan_under_test(v, diagnostics).
+inline vulkan::chain chain_under_test(vulkan::context& ctx, const variant& v, bool diagnostics = false)
+{
+    return vulkan::chain(ctx, plan_under_test(v, diagnostics));
 }
 
 inline size_t pixel(int w, int x, int y) { return static_cast<size_t>(y) * w + x; }
@@ -233,7 +241,7 @@ inline void check_facing_plane(vulkan::context& ctx, const variant& v)
     INFO(to_name(v));
     vulkan::chain c = chain_under_test(ctx, v);
     const vulkan::chain_result r = c.run(g, settings_for(proj));
-    const auto [TW, TH] = vulkan::output_size(v, W, H);
+    const auto [TW, TH] = c.plan().output_size(W, H);
     const bool screen_sized = TW == W; // the depth-aware upsample's output, or a full-resolution target
     REQUIRE(r.width == TW);
     REQUIRE(r.height == TH);

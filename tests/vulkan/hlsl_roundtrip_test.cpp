@@ -23,10 +23,10 @@ namespace {
 
 // `v`'s emitted `target` HLSL, each text under an emitted-text mutant aimed at it planted
 // (mutants/mutants.hpp: file "hlsl:<shader name>").
-std::vector<std::string> hlsl_under_test(const variant& v, compile::target target)
+std::vector<std::string> hlsl_under_test(const codegen::plan& p, compile::target target)
 {
-    std::vector<std::string> texts = emitted_texts(v, target, under_test(options_for(target)));
-    const std::vector<codegen::shader_source> sources = codegen::generate(v);
+    std::vector<std::string> texts = emitted_texts(p, target);
+    const std::vector<codegen::shader_source> sources = codegen::generate(p);
     for (size_t i = 0; i < texts.size(); ++i) texts[i] = emitted_under_test(texts[i], "hlsl:" + sources[i].name);
     return texts;
 }
@@ -46,9 +46,9 @@ TEST_CASE("vulkan: the emitted HLSL (SM 5.0, 6.0) round-tripped through glslang 
         for (const char* name : emitted_target_variants) {
             const variant v = variant_from_name(name);
             INFO(compile::to_name(target) << " " << name);
-            const std::unique_ptr<vulkan::pass_pipelines> round_trip = vulkan::hlsl_passes(*ctx, v, target, hlsl_under_test(v, target));
-            const auto [tw, th] = target_size(v, W, H);
-            const vulkan::chain_result got = vulkan::bound_chain(*ctx, *round_trip, g, inputs_for(v, s, tw, th), tw, th).run_once();
+            const codegen::plan p = plan_under_test(v);
+            const std::unique_ptr<vulkan::pass_pipelines> round_trip = vulkan::hlsl_passes(*ctx, p, target, hlsl_under_test(p, target));
+            const vulkan::chain_result got = vulkan::bound_chain(*ctx, *round_trip, g, p.inputs(s, W, H)).run_once();
             const vulkan::chain_result expected = chain_under_test(*ctx, v).run(host, s);
             REQUIRE(got.width == expected.width);
             const ao_difference d = difference_of(got.ao, expected.ao);

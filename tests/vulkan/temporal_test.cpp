@@ -67,17 +67,16 @@ TEST_CASE("vulkan: frame f of a chain equals frame 0 with its noise tile turned 
                              "gtao-2x2-half-denoise-gbufworld-std-persp-cs", "ssao-s16-full-noblur-gbufworld-std-persp-fs"}) {
         const variant v = variant_from_name(name);
         const vulkan::chain c = chain_under_test(*ctx, v);
-        const auto [tw, th] = target_size(v, W, H);
         const vulkan::chain_settings still = settings_for(proj);
-        const vulkan::chain_result frame0 = vulkan::bound_chain(*ctx, c.passes(), g, inputs_for(v, still, tw, th), tw, th).run_once();
+        const vulkan::chain_result frame0 = vulkan::bound_chain(*ctx, c.passes(), g, c.plan().inputs(still, W, H)).run_once();
         for (uint32_t f : {1u, 3u, 6u}) {
             INFO(name << ", frame " << f);
             vulkan::chain_settings s = still;
             s.frame = f;
-            const vulkan::chain_result moved = vulkan::bound_chain(*ctx, c.passes(), g, inputs_for(v, s, tw, th), tw, th).run_once();
-            const chain_inputs turned_tile = with_steps_moved(with_noise_turned(inputs_for(v, still, tw, th), temporal::frame_rotation(v, f)), v,
+            const vulkan::chain_result moved = vulkan::bound_chain(*ctx, c.passes(), g, c.plan().inputs(s, W, H)).run_once();
+            const chain_inputs turned_tile = with_steps_moved(with_noise_turned(c.plan().inputs(still, W, H), temporal::frame_rotation(v, f)), v,
                                                               temporal::step_offset(still.frame_sequence, f));
-            const vulkan::chain_result turned = vulkan::bound_chain(*ctx, c.passes(), g, turned_tile, tw, th).run_once();
+            const vulkan::chain_result turned = vulkan::bound_chain(*ctx, c.passes(), g, turned_tile).run_once();
             REQUIRE(moved.ao.size() == turned.ao.size());
             size_t differ = 0, moved_from_frame0 = 0;
             float largest = 0;
@@ -111,7 +110,7 @@ TEST_CASE("vulkan: a step offset of a whole step makes a two-step march the one-
         INFO(technique);
         auto run = [&](const variant& v, float offset) {
             const vulkan::chain c = chain_under_test(*ctx, v);
-            return vulkan::bound_chain(*ctx, c.passes(), g, with_steps_moved(inputs_for(v, still, W, H), v, offset), W, H).run_once().ao;
+            return vulkan::bound_chain(*ctx, c.passes(), g, with_steps_moved(c.plan().inputs(still, W, H), v, offset)).run_once().ao;
         };
         const std::vector<float> one_still = run(one, 0.0f), two_still = run(two, 0.0f);
         // The inner step on the pixel itself: the one-step march, to the bit.

@@ -43,8 +43,7 @@ inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipe
                             const vulkan::chain_settings& s)
 {
     const vulkan::gpu_gbuffer gpu(ctx, g);
-    const auto [tw, th] = target_size(v, g.width, g.height);
-    const vulkan::chain_result got = vulkan::bound_chain(ctx, passes, gpu, inputs_for(v, s, tw, th), tw, th).run_once();
+    const vulkan::chain_result got = vulkan::bound_chain(ctx, passes, gpu, passes.plan().inputs(s, g.width, g.height)).run_once();
     const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
     REQUIRE(got.width == expected.width);
     REQUIRE(got.height == expected.height);
@@ -59,8 +58,8 @@ inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipe
 inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, const std::vector<std::string>& texts, const vulkan::gbuffer& g,
                                         const vulkan::chain_settings& s)
 {
-    const auto [tw, th] = target_size(v, g.width, g.height);
-    const wgsl::dawn_result got = wgsl::run_variant_on_dawn(v, texts, g, inputs_for(v, s, tw, th));
+    const codegen::plan p = plan_for(codegen::make_plan(v), compile::target::wgsl);
+    const wgsl::dawn_result got = wgsl::run_variant_on_dawn(p, texts, g, p.inputs(s, g.width, g.height));
     std::vector<float> ao(got.ao.size());
     for (size_t i = 0; i < ao.size(); ++i) ao[i] = got.ao[i] / 255.0f;
     const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
@@ -125,7 +124,7 @@ inline std::string replace_first(const std::string& text, const std::string& fro
 // The index of pass `pass`'s compute or fragment shader among `v`'s shaders.
 inline size_t shader_index(const variant& v, pass_kind pass)
 {
-    const std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
+    const std::vector<codegen::shader_source> sources = codegen::generate(codegen::make_plan(v, options_for(compile::target::wgsl)));
     for (size_t i = 0; i < sources.size(); ++i)
         if (sources[i].pass == pass && sources[i].stage != shader_stage::vertex) return i;
     FAIL("no such pass");

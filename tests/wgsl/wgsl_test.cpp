@@ -20,17 +20,18 @@ TEST_CASE("wgsl: the emitted WGSL, validated by naga and Tint and round-tripped 
 {
     vulkan::context* ctx = shared_context();
     if (!ctx) return;
-    std::vector<variant> variants;
-    for (const char* name : emitted_target_variants) variants.push_back(variant_from_name(name));
-    vulkan::wgsl_round_trips trips(variants); // translation and both validators: throws on any refusal
+    std::vector<codegen::plan> plans;
+    for (const char* name : emitted_target_variants) plans.push_back(codegen::make_plan(variant_from_name(name)));
+    vulkan::wgsl_round_trips trips(plans); // translation and both validators: throws on any refusal
     const int W = 64, H = 40;
     const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
     const vulkan::gbuffer analytic = crease(W, H, 0.6f, proj);
     const ray_cast_crease scene;
-    for (const variant& v : variants) {
-        INFO(to_name(v));
-        const std::unique_ptr<vulkan::pass_pipelines> passes = trips.passes(*ctx, v);
-        for (const std::string& text : trips.texts(v)) CHECK((text.find("@group(0)") != std::string::npos || text.find("@vertex") != std::string::npos));
+    for (const codegen::plan& p : plans) {
+        const variant& v = p.axes();
+        INFO(p.name());
+        const std::unique_ptr<vulkan::pass_pipelines> passes = trips.passes(*ctx, p);
+        for (const std::string& text : trips.texts(p)) CHECK((text.find("@group(0)") != std::string::npos || text.find("@vertex") != std::string::npos));
         const ao_difference a = against_spirv(*ctx, *passes, v, analytic, settings_for(proj));
         const ao_difference r = against_spirv(*ctx, *passes, v, scene.for_variant(v), aogen_report::default_settings(v, scene.scene));
         std::cout << "wgsl round trip " << to_name(v) << ": analytic crease " << a.identical << " of " << a.pixels << ", ray-cast crease "
@@ -51,7 +52,7 @@ TEST_CASE("wgsl: Dawn executes the emitted WGSL (Tint's GLSL ES on llvmpipe), co
     for (const char* name : emitted_target_variants) {
         const variant v = variant_from_name(name);
         INFO(name);
-        const std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+        const std::vector<std::string> texts = emitted_texts(codegen::make_plan(v), compile::target::wgsl);
         for (int g = 0; g < 2; ++g) {
             const vulkan::gbuffer gb = g == 0 ? crease(W, H, 0.6f, proj) : scene.for_variant(v);
             const vulkan::chain_settings s = g == 0 ? settings_for(proj) : aogen_report::default_settings(v, scene.scene);
@@ -82,8 +83,8 @@ TEST_CASE("wgsl: every uniform block's WGSL declaration is the struct naga emits
     for (const auto& c : cases) {
         INFO(c.variant << " " << c.block.root.name);
         const variant v = variant_from_name(c.variant);
-        const std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
-        const std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+        const std::vector<codegen::shader_source> sources = codegen::generate(codegen::make_plan(v, options_for(compile::target::wgsl)));
+        const std::vector<std::string> texts = emitted_texts(codegen::make_plan(v), compile::target::wgsl);
         size_t k = 0;
         while (sources[k].pass != c.pass || sources[k].stage == shader_stage::vertex) ++k;
         const compile::buffer_block emitted = naga_block(texts[k], sources[k].stage, c.block.root.name);
@@ -101,8 +102,8 @@ TEST_CASE("wgsl: every uniform block's WGSL declaration is the struct naga emits
 TEST_CASE("wgsl: seed 004's variant has the seed's texture and sampler types, its SsaoUniform offsets, and says where its bindings differ")
 {
     const variant v = variant_from_name("ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004"); // the point-cloud viewer's shader
-    const std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
-    const std::vector<std::string> texts = emitted_texts(v, compile::target::wgsl);
+    const std::vector<codegen::shader_source> sources = codegen::generate(codegen::make_plan(v, options_for(compile::target::wgsl)));
+    const std::vector<std::string> texts = emitted_texts(codegen::make_plan(v), compile::target::wgsl);
     size_t k = 0;
     while (sources[k].pass != pass_kind::ao || sources[k].stage != shader_stage::fragment) ++k;
     const std::string& ao = texts[k];
@@ -158,7 +159,7 @@ TEST_CASE("wgsl: a variant without a WGSL form is refused by name, with the reas
 {
     const variant v = variant_from_name("gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16");
     try {
-        emitted_texts(v, compile::target::wgsl);
+        emitted_texts(codegen::make_plan(v), compile::target::wgsl);
         FAIL("an fp16 variant was translated to WGSL");
     } catch (const error& e) {
         const std::string what = e.what();
@@ -167,7 +168,7 @@ TEST_CASE("wgsl: a variant without a WGSL form is refused by name, with the reas
     }
     // Vulkan-model SPIR-V (combined samplers) has no WGSL form either, and says what to use.
     const variant plain = variant_from_name("ssao-s16-full-noblur-gbufworld-std-persp-cs");
-    const codegen::shader_source s = codegen::generate(plain).front();
+    const codegen::shader_source s = codegen::generate(codegen::make_plan(plain)).front();
     try {
         compile::compile(s.glsl, s.stage, s.name, {compile::target::wgsl});
         FAIL("combined image samplers were translated to WGSL");

@@ -3,12 +3,12 @@
 // the Vulkan harness uploads (aogen/chain_inputs.hpp).
 //
 // WHAT
-//   run(ctx, v, texts, g, in, o) compiles each pass's texts (SPIRV-Cross's GLSL 450 or ESSL
-//   output of codegen::generate(v, o), one text per shader it returns, in its order: per pass
-//   of passes(v), a compute shader, or a vertex and a fragment shader; ESSL compute needs
-//   o.output_format rgba8), uploads the G-buffer (depth R32F, normals RGBA32F), the noise tile
-//   (RGBA32F) and each pass's std140 uniform block, binds every resource codegen::resources()
-//   lists at its binding, runs the passes in order and reads the last output back as floats
+//   run(ctx, plan, texts, g, in) compiles each pass's texts (SPIRV-Cross's GLSL 450 or ESSL
+//   of the plan, emitted_texts(plan, target): one text per shader of the plan, in its order,
+//   per pass a compute shader, or a vertex and a fragment shader; ESSL compute needs the
+//   rgba8 output format, which emitted_texts gives it), uploads the G-buffer (depth R32F, normals RGBA32F), the noise tile
+//   (RGBA32F) and each pass's std140 uniform block (plan.inputs), binds every resource the
+//   plan's shader lists at its binding, runs the passes in order and reads the last output back as floats
 //   k / 255.
 //   Bindings: GLSL 450 and ESSL 310 carry them in the text (uniform blocks, texture units and
 //   image units each have their own numbers), and the runner binds there. ESSL 300 has no
@@ -27,8 +27,9 @@
 //
 // USAGE
 //     aogen::gl::context gl;
-//     std::vector<std::string> texts = aogen::emitted_texts(v, aogen::compile::target::glsl); // aogen/emitted.hpp
-//     aogen::gl::chain_result r = aogen::gl::run(gl, v, texts, g, aogen::inputs_for(v, s, tw, th));
+//     const aogen::codegen::plan p = aogen::plan_for(aogen::codegen::make_plan(v), aogen::compile::target::essl);
+//     std::vector<std::string> texts = aogen::emitted_texts(p, aogen::compile::target::essl); // aogen/emitted.hpp
+//     aogen::gl::chain_result r = aogen::gl::run(gl, p, texts, g, p.inputs(s, g.width, g.height));
 //
 // ERRORS
 //   aogen::error: a text count other than the shader count, a GLSL compile or link error (with
@@ -39,6 +40,7 @@
 #include <aogen/bent_normals.hpp>
 #include <aogen/chain_inputs.hpp>
 #include <aogen/codegen.hpp>
+#include <aogen/emitted.hpp>
 #include "context.hpp"
 
 #include <memory>
@@ -259,16 +261,17 @@ inline void draw(objects& gl, GLuint output, int w, int h)
 
 } // namespace detail
 
-// `o` must be the codegen options the texts were generated with (their output format).
-inline chain_result run(const context& ctx, const variant& v, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in,
-                        const codegen::options& o = {})
+// `p` is the plan the texts were emitted from (emitted_texts(p, target)): its passes,
+// resources, output format, workgroups and pixels per invocation are what the runner binds
+// and dispatches.
+inline chain_result run(const context& ctx, const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
 {
     ctx.make_current();
-    validate(v);
+    const variant& v = p.axes();
     if (has_prefilter_pass(v))
         fail("gl chain", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");
-    const std::vector<pass_kind> kinds = passes(v);
+    const std::vector<pass_kind>& kinds = p.passes();
     const std::vector<shader_stage> stages = codegen::stages(v);
     if (texts.size() != kinds.size() * stages.size() || in.uniforms.size() != kinds.size())
         fail("gl chain", std::to_string(texts.size()) + " texts and " + std::to_string(in.uniforms.size()) + " uniform blocks for " + to_name(v),
@@ -287,27 +290,27 @@ inline chain_result run(const context& ctx, const variant& v, const std::vector<
     t.albedo = g.albedo.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.albedo.data());
     t.noise = gl.texture(in.noise_size, in.noise_size, GL_RGBA32F, GL_RGBA, GL_FLOAT, in.noise.data());
     t.clamp = gl.sampler(GL_CLAMP_TO_EDGE), t.repeat = gl.sampler(GL_REPEAT);
-    const auto [tw, th] = target_size(v, g.width, g.height);
+    const auto [tw, th] = p.target_size(g.width, g.height);
     const bool compute = v.stage == pipeline_stage::compute;
-    const GLenum format = compute ? detail::image_format(codegen::output_format_of(v, o)) : GL_R8;
+    const GLenum format = compute ? detail::image_format(codegen::output_format_of(v, p.source_options())) : GL_R8;
 
     GLuint previous = 0;
     int out_w = 0, out_h = 0;
     for (size_t i = 0; i < kinds.size(); ++i) {
         const pass_kind pass = kinds[i];
-        const std::string name = to_name(v) + "." + names::name_of(pass_kind_names, pass, "pass");
+        const codegen::shader_plan& shader = p.pass_shader(i);
+        const std::string name = p.name() + "." + names::name_of(pass_kind_names, pass, "pass");
         out_w = pass == pass_kind::upsample ? g.width : tw, out_h = pass == pass_kind::upsample ? g.height : th;
         const GLuint output = gl.texture(out_w, out_h, format, GL_RED, GL_UNSIGNED_BYTE, nullptr);
         const std::string& last = texts[i * stages.size() + stages.size() - 1]; // the compute or fragment shader
         const GLuint program = compute ? gl.program({{GL_COMPUTE_SHADER, &last}}, name)
                                        : gl.program({{GL_VERTEX_SHADER, &texts[i * 2]}, {GL_FRAGMENT_SHADER, &last}}, name);
         glUseProgram(program);
-        const std::vector<codegen::resource> resources = codegen::resources(v, pass, stages.back(), o);
-        if (!detail::has_binding_qualifiers(last)) detail::bind_by_name(program, resources);
-        detail::bind_resources(gl, resources, name, in.uniforms[i], t, previous, output, format);
+        if (!detail::has_binding_qualifiers(last)) detail::bind_by_name(program, shader.resources);
+        detail::bind_resources(gl, shader.resources, name, in.uniforms[i], t, previous, output, format);
         if (compute) {
-            const int k = pixels_per_invocation(pass, pipeline_stage::compute);
-            glDispatchCompute(detail::groups(out_w, k, v.workgroup_x), detail::groups(out_h, k, v.workgroup_y), 1);
+            const int k = shader.pixels_per_invocation;
+            glDispatchCompute(detail::groups(out_w, k, shader.workgroup.first), detail::groups(out_h, k, shader.workgroup.second), 1);
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         } else {
             detail::draw(gl, output, out_w, out_h);
@@ -321,7 +324,7 @@ inline chain_result run(const context& ctx, const variant& v, const std::vector<
     for (size_t p = 0; p < r.ao.size(); ++p) r.ao[p] = rgba[4 * p] / 255.0f; // .r
     if (v.bent_normals) r.bent_normal = decode_bent_normals(rgba.data(), r.ao.size());
     const GLenum error = glGetError();
-    if (error != GL_NO_ERROR) fail("gl chain " + to_name(v), "GL error " + std::to_string(error), "valid: none");
+    if (error != GL_NO_ERROR) fail("gl chain " + p.name(), "GL error " + std::to_string(error), "valid: none");
     return r;
 }
 

@@ -64,10 +64,11 @@ struct technique_desc {
     technique id;
     // The AO pass's uniform block (uniforms.hpp's *_block), for `v`'s counts.
     layout::block_desc (*block)(const variant& v);
-    // The block's bytes for settings `s` under `rules`: its params, the camera, the AO target's
-    // size, the frame's extras (uniforms::pack_*). aogen::error on a setting out of range.
+    // The block's bytes for settings `s`, into `block` (block(v) laid out: a plan's, computed
+    // once): its params, the camera, the AO target's size, the frame's extras
+    // (uniforms::pack_*). aogen::error on a setting out of range.
     std::vector<uint8_t> (*pack)(const variant& v, const ao_settings& s, const uniforms::camera& camera, vec2 target_size,
-                                 layout::rules rules, const uniforms::extras& e);
+                                 const layout::struct_layout& block, const uniforms::extras& e);
     // The side of the noise tile the AO pass reads (SSAO's is a setting; the others' 4).
     int (*noise_size)(const ao_settings& s);
     // The AO pass's template files after common/noise.glsl, in order.

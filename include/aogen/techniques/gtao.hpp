@@ -39,11 +39,17 @@ inline const std::array<settings_member<gtao_params>, 6> gtao_members{{
 inline layout::block_desc gtao_block() { return {block_of("GtaoUniforms", gtao_members), {}}; }
 
 // GtaoUniforms bytes; GTAO uses no noise tile of its own beyond a 4×4 rotation.
-inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
+inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, vec2 target_size, const layout::struct_layout& block,
                                       int noise_size = 4, const extras& e = {})
 {
     validate(p);
-    return settings_writer(gtao_block(), gtao_members, p, cam, target_size, noise_size, rules, e).bytes();
+    return settings_writer(block, gtao_members, p, cam, target_size, noise_size, e).bytes();
+}
+// The same under `rules` (gtao_block() laid out here).
+inline std::vector<uint8_t> pack_gtao(const gtao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
+                                      int noise_size = 4, const extras& e = {})
+{
+    return pack_gtao(p, cam, target_size, layout::compute(gtao_block(), rules), noise_size, e);
 }
 
 } // namespace uniforms
@@ -53,8 +59,8 @@ namespace techniques {
 inline constexpr technique_desc gtao{
     technique::gtao,
     [](const variant&) { return uniforms::gtao_block(); },
-    [](const variant&, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, layout::rules rules,
-       const uniforms::extras& e) { return uniforms::pack_gtao(s.gtao, camera, target_size, rules, rotation_tile_size(s), e); },
+    [](const variant&, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, const layout::struct_layout& block,
+       const uniforms::extras& e) { return uniforms::pack_gtao(s.gtao, camera, target_size, block, rotation_tile_size(s), e); },
     rotation_tile_size,
     [](const variant&) { return std::vector<std::string>{"common/slices.glsl", "gtao.glsl"}; },
     [](const variant& v) { return slice_technique::count_defines("GTAO", v); },

@@ -44,13 +44,19 @@ inline layout::block_desc sao_block(int taps)
 
 // SaoUniforms bytes for a spiral of `taps` (the variant's samples); SAO's noise is a
 // rotation per pixel, like GTAO's.
-inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int taps, vec2 target_size, layout::rules rules,
+inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int taps, vec2 target_size, const layout::struct_layout& block,
                                      int noise_size = 4, const extras& e = {})
 {
     validate(p);
-    layout::writer w = settings_writer(sao_block(taps), sao_members, p, cam, target_size, noise_size, rules, e);
+    layout::writer w = settings_writer(block, sao_members, p, cam, target_size, noise_size, e);
     w.set("spiral", spiral::taps(taps));
     return w.bytes();
+}
+// The same under `rules` (sao_block(taps) laid out here).
+inline std::vector<uint8_t> pack_sao(const sao_params& p, const camera& cam, int taps, vec2 target_size, layout::rules rules,
+                                     int noise_size = 4, const extras& e = {})
+{
+    return pack_sao(p, cam, taps, target_size, layout::compute(sao_block(taps), rules), noise_size, e);
 }
 
 } // namespace uniforms
@@ -60,8 +66,8 @@ namespace techniques {
 inline constexpr technique_desc sao{
     technique::sao,
     [](const variant& v) { return uniforms::sao_block(v.samples); },
-    [](const variant& v, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, layout::rules rules,
-       const uniforms::extras& e) { return uniforms::pack_sao(s.sao, camera, v.samples, target_size, rules, rotation_tile_size(s), e); },
+    [](const variant& v, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, const layout::struct_layout& block,
+       const uniforms::extras& e) { return uniforms::pack_sao(s.sao, camera, v.samples, target_size, block, rotation_tile_size(s), e); },
     rotation_tile_size, // a rotation per pixel, like GTAO's
     [](const variant&) { return std::vector<std::string>{"sao.glsl"}; },
     [](const variant& v) { return std::vector<define>{{"AO_SAO_SAMPLES", std::to_string(v.samples)}}; },

@@ -48,15 +48,21 @@ inline layout::block_desc ssao_block(int samples)
 // variant::samples_range); `target_size` is the AO target's size in pixels (half the
 // screen at half resolution); `e` the frame's turn of the noise and the finalize settings.
 inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, const std::vector<vec4>& kernel,
-                                      vec2 target_size, layout::rules rules, const extras& e = {})
+                                      vec2 target_size, const layout::struct_layout& block, const extras& e = {})
 {
     validate(p);
+    layout::writer w = settings_writer(block, ssao_members, p, cam, target_size, p.noise_size, e);
+    w.set("kernel", kernel); // an aogen::error unless the kernel has the block's samples
+    return w.bytes();
+}
+// The same under `rules` (ssao_block(kernel size) laid out here).
+inline std::vector<uint8_t> pack_ssao(const ssao_params& p, const camera& cam, const std::vector<vec4>& kernel,
+                                      vec2 target_size, layout::rules rules, const extras& e = {})
+{
     const int_range n = variant::samples_range;
     if (kernel.size() < size_t(n.lo) || kernel.size() > size_t(n.hi))
         fail("ssao kernel", std::to_string(kernel.size()) + " samples given", "valid: " + to_string(n) + " samples, the variant's samples");
-    layout::writer w = settings_writer(ssao_block(int(kernel.size())), ssao_members, p, cam, target_size, p.noise_size, rules, e);
-    w.set("kernel", kernel);
-    return w.bytes();
+    return pack_ssao(p, cam, kernel, target_size, layout::compute(ssao_block(int(kernel.size())), rules), e);
 }
 
 } // namespace uniforms
@@ -66,10 +72,10 @@ namespace techniques {
 inline constexpr technique_desc ssao{
     technique::ssao,
     [](const variant& v) { return uniforms::ssao_block(v.samples); },
-    [](const variant& v, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, layout::rules rules,
+    [](const variant& v, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, const layout::struct_layout& block,
        const uniforms::extras& e) {
         const std::vector<vec4> k = kernel::generate(kernel::distribution_from_name(s.ssao.kernel), v.samples, s.ssao.kernel_seed);
-        return uniforms::pack_ssao(s.ssao, camera, k, target_size, rules, e);
+        return uniforms::pack_ssao(s.ssao, camera, k, target_size, block, e);
     },
     [](const ao_settings& s) { return s.ssao.noise_size; },
     [](const variant& v) {

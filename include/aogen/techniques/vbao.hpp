@@ -38,11 +38,17 @@ inline const std::array<settings_member<vbao_params>, 4> vbao_members{{
 inline layout::block_desc vbao_block() { return {block_of("VbaoUniforms", vbao_members), {}}; }
 
 // VbaoUniforms bytes; like GTAO, a 4×4 rotation tile unless told.
-inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
+inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, vec2 target_size, const layout::struct_layout& block,
                                       int noise_size = 4, const extras& e = {})
 {
     validate(p);
-    return settings_writer(vbao_block(), vbao_members, p, cam, target_size, noise_size, rules, e).bytes();
+    return settings_writer(block, vbao_members, p, cam, target_size, noise_size, e).bytes();
+}
+// The same under `rules` (vbao_block() laid out here).
+inline std::vector<uint8_t> pack_vbao(const vbao_params& p, const camera& cam, vec2 target_size, layout::rules rules,
+                                      int noise_size = 4, const extras& e = {})
+{
+    return pack_vbao(p, cam, target_size, layout::compute(vbao_block(), rules), noise_size, e);
 }
 
 } // namespace uniforms
@@ -52,8 +58,8 @@ namespace techniques {
 inline constexpr technique_desc vbao{
     technique::vbao,
     [](const variant&) { return uniforms::vbao_block(); },
-    [](const variant&, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, layout::rules rules,
-       const uniforms::extras& e) { return uniforms::pack_vbao(s.vbao, camera, target_size, rules, rotation_tile_size(s), e); },
+    [](const variant&, const ao_settings& s, const uniforms::camera& camera, vec2 target_size, const layout::struct_layout& block,
+       const uniforms::extras& e) { return uniforms::pack_vbao(s.vbao, camera, target_size, block, rotation_tile_size(s), e); },
     rotation_tile_size,
     [](const variant&) { return std::vector<std::string>{"common/slices.glsl", "vbao.glsl"}; },
     [](const variant& v) { return slice_technique::count_defines("VBAO", v); },

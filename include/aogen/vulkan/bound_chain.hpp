@@ -21,15 +21,16 @@
 //   fragment) and back, so record() can follow itself or any other chain. Every record()
 //   starts with a full execution barrier, so its passes never overlap the work recorded
 //   before it and a pass's time is its own, not shared with its neighbour's.
-//   The AO target size is the caller's (chain.hpp's target_size for a variant); every
-//   pass's output has that size but the upsample pass's, which has the G-buffer's, and the
-//   prefilter's, the r32f atlas of the depth MIP chain (aogen/depth_mips.hpp) the AO pass reads.
+//   The AO target size is the plan's (pass_pipelines::plan().target_size of the G-buffer's
+//   size); every pass's output has that size but the upsample pass's, which has the
+//   G-buffer's, and the prefilter's, the r32f atlas of the depth MIP chain
+//   (aogen/depth_mips.hpp) the AO pass reads.
 //
 // USAGE
-//     aogen::vulkan::pass_pipelines passes(ctx, v);
+//     const aogen::codegen::plan plan = aogen::codegen::make_plan(v);
+//     aogen::vulkan::pass_pipelines passes(ctx, plan, aogen::codegen::generate(plan));
 //     aogen::vulkan::gpu_gbuffer g(ctx, host_gbuffer);
-//     auto [tw, th] = aogen::vulkan::target_size(v, g.width(), g.height());
-//     aogen::vulkan::bound_chain b(ctx, passes, g, aogen::vulkan::inputs_for(v, settings, tw, th), tw, th);
+//     aogen::vulkan::bound_chain b(ctx, passes, g, plan.inputs(settings, g.width(), g.height()));
 //     aogen::vulkan::chain_result r = b.run_once();         // r.ao, r.pass_ms, r.raw
 //     // timing.hpp: time_chains(ctx, {&b, &other}, options)
 //
@@ -77,12 +78,14 @@ inline std::vector<uint64_t> read_queries(const context& ctx, VkQueryPool pool, 
 
 class bound_chain {
 public:
-    // `counter` counts the raw images of diagnostic passes (one is made on first use if null).
-    bound_chain(context& ctx, const pass_pipelines& passes, const gpu_gbuffer& g, const chain_inputs& in, int target_width, int target_height,
-                const raw_counter* counter = nullptr)
+    // `in`: the bytes the passes read (passes.plan().inputs(settings, g's size), or bytes
+    // made from them). `counter` counts the raw images of diagnostic passes (one is made on
+    // first use if null).
+    bound_chain(context& ctx, const pass_pipelines& passes, const gpu_gbuffer& g, const chain_inputs& in, const raw_counter* counter = nullptr)
         : ctx_(ctx), passes_(passes), scope_(ctx), counter_(counter)
     {
         depth_size_ = {g.width(), g.height()};
+        const auto [target_width, target_height] = passes.plan().target_size(g.width(), g.height());
         for (size_t i = 0; i < passes.size(); ++i) sizes_.push_back(output_size_of(passes[i].kind, target_width, target_height));
         if (in.uniforms.size() != passes.size())
             throw error("vulkan bound chain: uniform bytes for " + std::to_string(in.uniforms.size()) + " passes given to " + passes.name() +

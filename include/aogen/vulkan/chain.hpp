@@ -6,15 +6,14 @@
 //   pipelines, or fullscreen-triangle graphics pipelines for fragment variants). Then
 //     bind(g, settings)   binds it to an uploaded G-buffer (inputs.hpp's gpu_gbuffer) with
 //                         the kernel and noise tile the params name and the std140 uniform
-//                         bytes of uniforms::pack_* (inputs_for): a bound_chain
+//                         bytes the plan writes (plan.inputs): a bound_chain
 //                         (bound_chain.hpp) that can be recorded and dispatched any number
 //                         of times — what timing.hpp times;
 //     run(g, settings)    the convenience on top: upload, bind, run once, read back the AO
 //                         as floats with each pass's GPU time.
 //   Compute and fragment variants share everything but the pipelines and how a pass is
 //   recorded (a dispatch, or a draw into a colour attachment), so both give the same AO for
-//   the same axes. With chain_options::diagnostics the passes are built with
-//   codegen::options::diagnostics: each also stores its raw, unguarded value, and run()
+//   the same axes. From a plan made with codegen::options::diagnostics each pass also stores its raw, unguarded value, and run()
 //   returns what those held (chain_result::raw: NaN, Inf, below 0, above 1 per pass).
 //
 //   Inputs: depth as raw depth-buffer values in an R32_SFLOAT colour image (the default)
@@ -26,14 +25,14 @@
 //   and with the rgba8 output format: passes.hpp) of the AO target size: the G-buffer's
 //   size, or ((w + 1) / 2, (h + 1) / 2) at half resolution (a storage image for compute,
 //   a colour attachment for fragment); a half-resolution variant's upsample pass writes
-//   one of the G-buffer's size (output_size: the size of what the chain returns). run_options::clear fills every
+//   one of the G-buffer's size (plan.output_size: the size of what the chain returns). run_options::clear fills every
 //   AO image before the passes; running with two clear values and comparing shows that
 //   every pixel was written.
 //
 // USAGE
 //     aogen::vulkan::context ctx({true});
 //     aogen::variant v;                                   // ssao-s16-half-bilateral-...
-//     aogen::vulkan::chain c(ctx, v);                     // any stage: compute or fragment
+//     aogen::vulkan::chain c(ctx, aogen::codegen::make_plan(v)); // any stage: compute or fragment
 //     aogen::vulkan::gbuffer g{w, h, depth, normals};     // row-major, top row first
 //     aogen::vulkan::chain_settings s;                    // params + camera
 //     aogen::vulkan::chain_result r = c.run(g, s);        // r.ao (r.width × r.height), r.pass_ms
@@ -66,46 +65,30 @@ struct run_options {
     depth_format depth = depth_format::r32_sfloat;  // how the depth buffer reaches the shaders
 };
 
-struct chain_options {
-    bool diagnostics = false; // every pass also stores its raw value (codegen::options::diagnostics)
-    codegen::template_reader templates; // codegen::options::templates: empty, the embedded ones
-};
-
-// chain_settings, target_size, output_size and inputs_for are aogen/chain_inputs.hpp's.
+// chain_settings and gbuffer are aogen/chain_inputs.hpp's; the sizes and the uniform bytes
+// come from the plan (plan.target_size, plan.output_size, plan.inputs).
 using aogen::chain_settings;
-using aogen::inputs_for;
-using aogen::output_size;
-using aogen::target_size;
 
 class chain {
 public:
-    chain(context& ctx, const variant& v, const chain_options& o = {}, spirv_cache* cache = nullptr)
-        : chain(ctx, codegen::make_plan(v, codegen_options(o)), cache)
-    {
-    }
-
-    // The chain of a planned variant (its options::diagnostics decides chain_result::raw).
-    chain(context& ctx, const codegen::plan& p, spirv_cache* cache = nullptr) : chain(ctx, p, codegen::generate(p), cache) {}
-
-    // The same from generate(p)'s sources, for a caller that has them already.
-    chain(context& ctx, const codegen::plan& p, const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
-        : ctx_(ctx), plan_(p), passes_(ctx, p, sources, cache)
+    // The chain of a planned variant: its options decide the sources (options::diagnostics:
+    // chain_result::raw; options::templates: where the templates are read).
+    chain(context& ctx, const codegen::plan& p, spirv_cache* cache = nullptr)
+        : ctx_(ctx), passes_(ctx, p, codegen::generate(p), cache)
     {
         if (p.source_options().diagnostics) counter_ = std::make_unique<raw_counter>(ctx, cache);
     }
 
-    const variant& var() const { return plan_.axes(); }
-    const codegen::plan& plan() const { return plan_; }
+    const codegen::plan& plan() const { return passes_.plan(); }
     const pass_pipelines& passes() const { return passes_; }
     // The kernel that counts the raw images of a diagnostic chain (nullptr otherwise): a caller
     // that binds the chain's passes itself passes it on, so the kernel is built once per chain.
     const raw_counter* counter() const { return counter_.get(); }
 
-    // The chain bound to `g` with settings `s` (inputs_for), ready to record and dispatch.
+    // The chain bound to `g` with settings `s` (plan.inputs), ready to record and dispatch.
     std::unique_ptr<bound_chain> bind(const gpu_gbuffer& g, const chain_settings& s) const
     {
-        const auto [tw, th] = target_size(var(), g.width(), g.height());
-        return std::make_unique<bound_chain>(ctx_, passes_, g, inputs_for(var(), s, tw, th), tw, th, counter_.get());
+        return std::make_unique<bound_chain>(ctx_, passes_, g, plan().inputs(s, g.width(), g.height()), counter_.get());
     }
 
     // Uploads `g`, binds, runs once and reads the AO back (see the header comment).
@@ -116,16 +99,7 @@ public:
     }
 
 private:
-    static codegen::options codegen_options(const chain_options& o)
-    {
-        codegen::options c;
-        c.diagnostics = o.diagnostics;
-        c.templates = o.templates;
-        return c;
-    }
-
     context& ctx_;
-    codegen::plan plan_;
     pass_pipelines passes_;
     std::unique_ptr<raw_counter> counter_; // diagnostics only
 };

@@ -19,7 +19,9 @@
 //
 // USAGE
 //     aogen::vulkan::raw_counter counter(ctx);
-//     aogen::vulkan::chain c(ctx, v, {/*diagnostics*/ true});
+//     aogen::codegen::options o;
+//     o.diagnostics = true;
+//     aogen::vulkan::chain c(ctx, aogen::codegen::make_plan(v, o));
 //     aogen::vulkan::chain_result r = c.run(g, s);    // r.raw[pass].nan, .inf, ...
 //
 // ERRORS

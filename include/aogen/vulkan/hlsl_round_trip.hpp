@@ -19,29 +19,29 @@
 
 namespace aogen::vulkan {
 
-// `v`'s passes built from `hlsl`, its `target` texts in codegen's order (emitted_texts(v,
-// target), or a copy a test has edited).
-inline std::unique_ptr<pass_pipelines> hlsl_passes(context& ctx, const variant& v, compile::target target, const std::vector<std::string>& hlsl)
+// The passes of plan `p` built from `hlsl`, its `target` texts in the plan's order
+// (emitted_texts(p, target), or a copy a test has edited).
+inline std::unique_ptr<pass_pipelines> hlsl_passes(context& ctx, const codegen::plan& p, compile::target target, const std::vector<std::string>& hlsl)
 {
     if (target != compile::target::hlsl50 && target != compile::target::hlsl60)
         fail("hlsl round trip target", compile::to_name(target), "valid: hlsl, hlsl60");
+    const codegen::plan planned = plan_for(p, target);
     spirv_cache cache;
-    std::vector<codegen::shader_source> sources = codegen::generate(v);
+    std::vector<codegen::shader_source> sources = codegen::generate(planned);
     if (hlsl.size() != sources.size())
-        fail("hlsl round trip of " + to_name(v), std::to_string(hlsl.size()) + " texts", "valid: one per shader, " + std::to_string(sources.size()));
+        fail("hlsl round trip of " + p.name(), std::to_string(hlsl.size()) + " texts", "valid: one per shader, " + std::to_string(sources.size()));
     for (size_t i = 0; i < sources.size(); ++i) {
         codegen::shader_source& s = sources[i];
         s.glsl = hlsl[i]; // the cache's key: the pass's text is the HLSL now
         cache.put(s, compile::hlsl_to_spirv(s.glsl, s.stage, s.name + "." + compile::to_name(target)));
     }
-    return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (" + compile::to_name(target) + " round trip)", v.stage, v.workgroup_x,
-                                            v.workgroup_y, sources, &cache, v.bent_normals);
+    return std::make_unique<pass_pipelines>(ctx, planned, sources, &cache, p.name() + " (" + compile::to_name(target) + " round trip)");
 }
 
-// `v`'s passes built from its emitted HLSL of `target` (hlsl50 or hlsl60).
-inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const variant& v, compile::target target)
+// The passes of plan `p` built from its emitted HLSL of `target` (hlsl50 or hlsl60).
+inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const codegen::plan& p, compile::target target)
 {
-    return hlsl_passes(ctx, v, target, emitted_texts(v, target));
+    return hlsl_passes(ctx, p, target, emitted_texts(p, target));
 }
 
 } // namespace aogen::vulkan

@@ -12,7 +12,7 @@
 //                 scene's G-buffer once for every variant it runs.
 //   chain_inputs  the bytes a chain's passes read besides the G-buffer: each pass's uniform
 //                 block (std140, in pass order) and the noise tile as RGBA32F texels. Made by
-//                 chain.hpp's inputs_for(variant, settings, ...) — or by hand, for a caller
+//                 a plan's inputs(settings, w, h) (codegen/plan.hpp) — or by hand, for a caller
 //                 that packs its own uniforms (a test planting a NaN does).
 //
 // USAGE

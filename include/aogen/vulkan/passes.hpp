@@ -14,15 +14,17 @@
 //               make_framebuffer() makes the framebuffer of an output image once, and
 //               record() sets the viewport and scissor to the target size and draws 3
 //               vertices without vertex buffers.
-//   The passes are a variant's (codegen::generate(v, options): options::diagnostics adds
-//   each pass's raw-value image) or any list of shader sources in codegen's order and with
-//   its resource names — the report's fetch-floor kernels are such a list.
+//   The passes are a plan's (codegen::make_plan(v, options): options::diagnostics adds each
+//   pass's raw-value image), built from codegen::generate(plan)'s sources or from texts of the
+//   same shaders by another road, in the plan's order and with its resource names — a
+//   target's round trip and the report's floor kernels are such lists.
 //   output() says how the stage's passes use their output image (usage, layout, access,
 //   pipeline stage) and reader_stage() where the passes sample their inputs, so the
 //   caller's barriers are the same code for both stages.
 //
 // USAGE
-//     aogen::vulkan::pass_pipelines p(ctx, v);            // v.stage compute or fragment
+//     const aogen::codegen::plan plan = aogen::codegen::make_plan(v);  // v.stage compute or fragment
+//     aogen::vulkan::pass_pipelines p(ctx, plan, aogen::codegen::generate(plan));
 //     for (size_t i = 0; i < p.size(); ++i) { ... p[i].resources, p[i].set_layout ... }
 //     VkFramebuffer fb = p.make_framebuffer(scope, output_image, w, h);   // null for compute
 //     p.record(cb, i, set, fb, target_w, target_h);
@@ -91,30 +93,16 @@ inline VkDescriptorType descriptor_type(codegen::resource_kind k)
 
 class pass_pipelines {
 public:
-    // The passes of variant `v`, generated with `o`.
-    pass_pipelines(context& ctx, const variant& v, const codegen::options& o = {}, spirv_cache* cache = nullptr)
-        : pass_pipelines(ctx, codegen::make_plan(v, o), cache)
+    // The passes of plan `p`, built from `sources`: codegen::generate(p)'s, or texts of the
+    // same shaders by another road (a target's round trip, the report's floors) -- one per
+    // shader of the plan, in its order, of the same pass and stage. `name` names them in
+    // messages (empty: the plan's name). The plan gives each pass's workgroup, pixels per
+    // invocation and sizes (plan(): what bound_chain binds).
+    pass_pipelines(context& ctx, const codegen::plan& p, const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr,
+                   std::string name = "")
+        : ctx_(ctx), plan_(p), name_(name.empty() ? p.name() : std::move(name))
     {
-    }
-
-    // The passes of a planned variant.
-    pass_pipelines(context& ctx, const codegen::plan& p, spirv_cache* cache = nullptr) : pass_pipelines(ctx, p, codegen::generate(p), cache) {}
-
-    // The same from its sources, for a caller that has generated them already (the report
-    // compiles every source of a run in one batch first): `sources` must be generate(p)'s.
-    pass_pipelines(context& ctx, const codegen::plan& p, const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr)
-        : pass_pipelines(ctx, p.name(), p.axes().stage, p.axes().workgroup_x, p.axes().workgroup_y, require_planned(p, sources), cache,
-                         p.axes().bent_normals)
-    {
-    }
-
-    // Passes from `sources` (codegen's order: per pass the compute shader, or the vertex
-    // then the fragment shader), all of `stage`; `name` names them in messages.
-    // `bent_normals`: the sources are a -bn variant's (their outputs hold bent normals).
-    pass_pipelines(context& ctx, std::string name, pipeline_stage stage, int workgroup_x, int workgroup_y,
-                   const std::vector<codegen::shader_source>& sources, spirv_cache* cache = nullptr, bool bent_normals = false)
-        : ctx_(ctx), name_(std::move(name)), stage_(stage), bent_normals_(bent_normals), workgroup_x_(workgroup_x), workgroup_y_(workgroup_y)
-    {
+        require_planned(sources);
         if (fragment() && !ctx.graphics())
             throw error("vulkan: " + name_ + " is a fragment chain, and the queue of " + ctx.device_name() +
                         " has no graphics (valid: stage compute on this device)");
@@ -132,10 +120,11 @@ public:
 
     size_t size() const { return passes_.size(); }
     const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
-    bool fragment() const { return stage_ == pipeline_stage::fragment; }
+    bool fragment() const { return plan_.axes().stage == pipeline_stage::fragment; }
     const std::string& name() const { return name_; }
+    const codegen::plan& plan() const { return plan_; }
     // Do the passes write a bent normal beside the AO (a -bn variant's: .gba of rgba8)?
-    bool bent_normals() const { return bent_normals_; }
+    bool bent_normals() const { return plan_.axes().bent_normals; }
 
     // Where the passes read their inputs (uploads and the previous pass's output).
     VkPipelineStageFlags reader_stage() const
@@ -183,19 +172,20 @@ public:
             vkCmdDraw(cb, 3, 1, 0, 0); // the fullscreen triangle from gl_VertexIndex
             vkCmdEndRenderPass(cb);
         } else {
-            const int k = pixels_per_invocation(p.kind, pipeline_stage::compute);
-            const auto [wx, wy] = workgroup_of(p.kind, {workgroup_x_, workgroup_y_});
+            const codegen::shader_plan& planned = plan_.pass_shader(i);
+            const int k = planned.pixels_per_invocation;
+            const auto [wx, wy] = planned.workgroup;
             vkCmdDispatch(cb, groups((w + k - 1) / k, wx), groups((h + k - 1) / k, wy), 1);
         }
     }
 
 private:
-    static const std::vector<codegen::shader_source>& require_planned(const codegen::plan& p, const std::vector<codegen::shader_source>& sources)
+    void require_planned(const std::vector<codegen::shader_source>& sources) const
     {
-        bool same = sources.size() == p.shaders().size();
-        for (size_t i = 0; same && i < sources.size(); ++i) same = sources[i].name == p.shaders()[i].name;
-        if (!same) fail("vulkan passes of " + p.name(), "were given sources of another plan", "valid: codegen::generate(plan)'s sources");
-        return sources;
+        const std::vector<codegen::shader_plan>& shaders = plan_.shaders();
+        bool same = sources.size() == shaders.size();
+        for (size_t i = 0; same && i < sources.size(); ++i) same = sources[i].pass == shaders[i].pass && sources[i].stage == shaders[i].stage;
+        if (!same) fail("vulkan passes of " + name_, "were given sources of another plan", "valid: a source per shader of the plan, in its order");
     }
 
     static uint32_t groups(int size, int workgroup) { return static_cast<uint32_t>((size + workgroup - 1) / workgroup); }
@@ -395,12 +385,10 @@ private:
     }
 
     context& ctx_;
+    codegen::plan plan_;
     std::string name_;
-    pipeline_stage stage_;
-    bool bent_normals_;
     VkFormat output_format_ = ao_format;
     bool has_ao_output_ = false; // output_format_ is a pass's, not the default
-    int workgroup_x_, workgroup_y_;
     std::vector<pass_pipeline> passes_;
     std::vector<VkShaderModule> modules_; // every module, the shared vertex shader once
     VkRenderPass render_pass_ = VK_NULL_HANDLE;

@@ -1,11 +1,11 @@
 // aogen/vulkan/wgsl_round_trip.hpp — variants' passes built from their emitted WGSL translated
 // back to SPIR-V by naga, to run the WGSL on the Vulkan harness.
 //
-//     aogen::vulkan::wgsl_round_trips trips(variants);          // one batch for all of them
-//     std::unique_ptr<aogen::vulkan::pass_pipelines> p = trips.passes(ctx, v);
-//     aogen::vulkan::bound_chain(ctx, *p, g, inputs, tw, th).run_once();   // as the variant's own
-//     // WGSL texts of your own for v's shaders (a test's mutant, say):
-//     p = aogen::vulkan::wgsl_passes(ctx, v, texts);
+//     aogen::vulkan::wgsl_round_trips trips(plans);             // one batch for all of them
+//     std::unique_ptr<aogen::vulkan::pass_pipelines> p = trips.passes(ctx, plan);
+//     aogen::vulkan::bound_chain(ctx, *p, g, plan.inputs(s, w, h)).run_once(); // as the variant's own
+//     // WGSL texts of your own for the plan's shaders (a test's mutant, say):
+//     p = aogen::vulkan::wgsl_passes(ctx, plan, texts);
 //
 // Each pass's WebGPU-model GLSL (emitted.hpp's options_for(wgsl): separate textures and
 // samplers, an rgba8 output) goes to SPIR-V, to WGSL through naga (validated by naga and
@@ -24,13 +24,14 @@
 
 namespace aogen::vulkan {
 
-// The passes of `v` from WGSL texts of its shaders (one per shader, codegen's order), each
-// translated to SPIR-V by naga; they bind as the WebGPU-model sources' resources.
-inline std::unique_ptr<pass_pipelines> wgsl_passes(context& ctx, const variant& v, const std::vector<std::string>& texts)
+// The passes of plan `p` from WGSL texts of its shaders (one per shader, the plan's order),
+// each translated to SPIR-V by naga; they bind as the WebGPU-model sources' resources.
+inline std::unique_ptr<pass_pipelines> wgsl_passes(context& ctx, const codegen::plan& p, const std::vector<std::string>& texts)
 {
-    std::vector<codegen::shader_source> sources = codegen::generate(v, options_for(compile::target::wgsl));
+    const codegen::plan planned = plan_for(p, compile::target::wgsl);
+    std::vector<codegen::shader_source> sources = codegen::generate(planned);
     if (texts.size() != sources.size())
-        fail("wgsl passes of " + to_name(v), std::to_string(texts.size()) + " texts", "valid: one per shader, " + std::to_string(sources.size()));
+        fail("wgsl passes of " + p.name(), std::to_string(texts.size()) + " texts", "valid: one per shader, " + std::to_string(sources.size()));
     std::vector<wgsl::wgsl_job> jobs;
     for (size_t i = 0; i < sources.size(); ++i) jobs.push_back({sources[i].name, sources[i].stage, texts[i]});
     const std::vector<std::vector<uint32_t>> words = wgsl::to_spirv(jobs);
@@ -39,24 +40,22 @@ inline std::unique_ptr<pass_pipelines> wgsl_passes(context& ctx, const variant& 
         sources[i].glsl = texts[i];
         cache.put(sources[i], words[i]);
     }
-    return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (wgsl)", v.stage, v.workgroup_x, v.workgroup_y, sources, &cache,
-                                            v.bent_normals);
+    return std::make_unique<pass_pipelines>(ctx, planned, sources, &cache, p.name() + " (wgsl)");
 }
 
 class wgsl_round_trips {
 public:
-    // Translates every shader of `variants` (identical texts once) in one batch of the
-    // WGSL tools.
-    explicit wgsl_round_trips(const std::vector<variant>& variants)
+    // Translates every shader of `plans` (identical texts once) in one batch of the WGSL tools.
+    explicit wgsl_round_trips(const std::vector<codegen::plan>& plans)
     {
-        const codegen::options o = options_for(compile::target::wgsl);
         std::vector<codegen::shader_source> unique;
         std::map<std::pair<shader_stage, std::string>, size_t> index; // by (stage, GLSL text)
-        for (const variant& v : variants) {
-            std::vector<codegen::shader_source> sources = codegen::generate(v, o);
-            for (const codegen::shader_source& s : sources)
+        for (const codegen::plan& p : plans) {
+            translated t{plan_for(p, compile::target::wgsl), {}};
+            t.sources = codegen::generate(t.plan);
+            for (const codegen::shader_source& s : t.sources)
                 if (index.emplace(std::make_pair(s.stage, s.glsl), unique.size()).second) unique.push_back(s);
-            sources_[to_name(v)] = std::move(sources);
+            translated_.emplace(p.name(), std::move(t));
         }
         spirv_cache glsl;
         glsl.compile_all(unique);
@@ -66,34 +65,44 @@ public:
         std::vector<wgsl::wgsl_job> back;
         for (size_t i = 0; i < unique.size(); ++i) back.push_back({unique[i].name, unique[i].stage, texts[i]});
         const std::vector<std::vector<uint32_t>> round_tripped = wgsl::to_spirv(back);
-        for (auto& [name, sources] : sources_)
-            for (codegen::shader_source& s : sources) {
+        for (auto& [name, t] : translated_)
+            for (codegen::shader_source& s : t.sources) {
                 const size_t i = index.at(std::make_pair(s.stage, s.glsl));
                 s.glsl = texts[i]; // the cache's key: the pass's text is the WGSL now
                 wgsl_.put(s, round_tripped[i]);
             }
     }
 
-    // The passes of `v` (one of the variants given) from naga's SPIR-V of its WGSL.
-    std::unique_ptr<pass_pipelines> passes(context& ctx, const variant& v)
+    // The passes of plan `p` (one of the plans given) from naga's SPIR-V of its WGSL.
+    std::unique_ptr<pass_pipelines> passes(context& ctx, const codegen::plan& p)
     {
-        const auto found = sources_.find(to_name(v));
-        if (found == sources_.end()) fail("wgsl round trip", to_name(v) + " was not translated", "valid: a variant given to wgsl_round_trips");
-        return std::make_unique<pass_pipelines>(ctx, to_name(v) + " (wgsl round trip)", v.stage, v.workgroup_x, v.workgroup_y, found->second,
-                                                &wgsl_, v.bent_normals);
+        const translated& t = find(p);
+        return std::make_unique<pass_pipelines>(ctx, t.plan, t.sources, &wgsl_, p.name() + " (wgsl round trip)");
     }
 
-    // The WGSL texts of `v`, one per shader in codegen's order.
-    std::vector<std::string> texts(const variant& v) const
+    // The WGSL texts of plan `p`, one per shader in the plan's order.
+    std::vector<std::string> texts(const codegen::plan& p) const
     {
         std::vector<std::string> out;
-        for (const codegen::shader_source& s : sources_.at(to_name(v))) out.push_back(s.glsl);
+        for (const codegen::shader_source& s : find(p).sources) out.push_back(s.glsl);
         return out;
     }
 
 private:
-    std::map<std::string, std::vector<codegen::shader_source>> sources_; // by variant name; .glsl holds the WGSL
-    spirv_cache wgsl_;                                                   // naga's SPIR-V, by WGSL text
+    struct translated {
+        codegen::plan plan;                          // the plan under the WGSL target's options
+        std::vector<codegen::shader_source> sources; // its shaders; .glsl holds the WGSL
+    };
+
+    const translated& find(const codegen::plan& p) const
+    {
+        const auto found = translated_.find(p.name());
+        if (found == translated_.end()) fail("wgsl round trip", p.name() + " was not translated", "valid: a plan given to wgsl_round_trips");
+        return found->second;
+    }
+
+    std::map<std::string, translated> translated_; // by variant name
+    spirv_cache wgsl_;                             // naga's SPIR-V, by WGSL text
 };
 
 } // namespace aogen::vulkan

@@ -2,8 +2,8 @@
 // arithmetic between them, and its passes' inputs read once.
 //
 // WHAT
-//   floor_sources(v, kind) generates the compute shaders of one of v's floors: codegen::
-//   generate of v's compute twin (same axes, stage compute, no point-cloud fallback) with the
+//   floor_of(plan, kind) generates the compute shaders of one of a planned variant's floors:
+//   codegen::generate of its compute twin (same axes, stage compute, no point-cloud fallback) with the
 //   templates whose work the floor drops replaced by report/floor/'s files
 //   (report/floor/README.md lists them and what each reads). Everything else — defines, bindings, the uniform block,
 //   depth and noise helpers, entry point, output image — is the variant's own, so a floor
@@ -23,10 +23,9 @@
 //   point-cloud twin share one floor.
 //
 // USAGE
-//     std::vector<aogen::codegen::shader_source> s = aogen_report::floor_sources(v, aogen_report::floor_kind::fetch);
-//     aogen::vulkan::pass_pipelines floor(ctx, "floor of " + name, aogen::pipeline_stage::compute,
-//                                         v.workgroup_x, v.workgroup_y, s, &cache);
-//     // bind with aogen::vulkan::inputs_for(v, settings, tw, th), as the variant
+//     const aogen_report::floor_shaders f = aogen_report::floor_of(plan, aogen_report::floor_kind::fetch);
+//     aogen::vulkan::pass_pipelines floor(ctx, f.plan, f.sources, &cache, "the fetch floor of " + plan.name());
+//     // bind with plan.inputs(settings, w, h), as the variant
 #pragma once
 
 #include "report_techniques.hpp"
@@ -105,19 +104,39 @@ inline std::string floor_replacement(floor_kind kind, const std::string& path)
     return kind == floor_kind::fetch ? fetch_floor_replacement(path) : bandwidth_floor_replacement(path);
 }
 
-// A floor's compute shaders, one per pass of `v`, named "<variant>.floor.<pass>.comp" (the
-// fetch floor) or "<variant>.bandwidth.<pass>.comp".
-inline std::vector<aogen::codegen::shader_source> floor_sources(const aogen::variant& v, floor_kind kind = floor_kind::fetch)
+// The shaders of one floor of a planned variant: the plan they are made from and its sources.
+struct floor_shaders {
+    aogen::codegen::plan plan;                           // the compute twin's, under the floor's templates
+    std::vector<aogen::codegen::shader_source> sources;  // one compute shader per pass
+};
+
+// The plan a planned variant's floors are made from: its compute twin's (floor_variant) --
+// `p` itself where the twin is p's variant (a compute variant without the fallback), so that
+// only a fragment or point-cloud variant's twin, another variant, is planned.
+inline aogen::codegen::plan floor_base(const aogen::codegen::plan& p)
 {
-    const aogen::variant twin = floor_variant(v);
-    const aogen::codegen::template_reader read = [kind](const std::string& path) {
+    const aogen::variant twin = floor_variant(p.axes());
+    return twin == p.axes() ? p : aogen::codegen::make_plan(twin);
+}
+
+// One floor of the planned variant `p`: `base` (floor_base(p)) under the templates of `kind`
+// (plan::with_options: not planned again) and its compute shaders, named
+// "<variant>.floor.<pass>.comp" (the fetch floor) or "<variant>.bandwidth.<pass>.comp".
+inline floor_shaders floor_of(const aogen::codegen::plan& p, const aogen::codegen::plan& base, floor_kind kind)
+{
+    aogen::codegen::options o;
+    o.templates = [kind](const std::string& path) {
         const std::string floor = floor_replacement(kind, path);
         return floor.empty() ? aogen::codegen::embedded_template(path) : floor;
     };
-    std::vector<aogen::codegen::shader_source> out = aogen::codegen::generate(twin, read);
-    const std::string name = aogen::to_name(v) + (kind == floor_kind::fetch ? ".floor." : ".bandwidth.");
-    for (aogen::codegen::shader_source& s : out) s.name = name + aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass") + ".comp";
-    return out;
+    floor_shaders f{base.with_options(o), {}};
+    f.sources = aogen::codegen::generate(f.plan);
+    const std::string name = p.name() + (kind == floor_kind::fetch ? ".floor." : ".bandwidth.");
+    for (aogen::codegen::shader_source& s : f.sources) s.name = name + aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass") + ".comp";
+    return f;
 }
+
+// The same with floor_base(p) worked out here (one floor of one variant).
+inline floor_shaders floor_of(const aogen::codegen::plan& p, floor_kind kind = floor_kind::fetch) { return floor_of(p, floor_base(p), kind); }
 
 } // namespace aogen_report

@@ -103,29 +103,35 @@ inline clock_record clocks_of(std::vector<double> mhz)
     return c;
 }
 
-// Every shader a run needs of one variant, planned and generated once: as shipped (timed),
-// in diagnostic form (scored) and its two floors (empty for twins and without floors).
+// Every shader a run needs of one variant, planned once and generated once: as shipped
+// (timed), in diagnostic form (scored: the same plan with options::diagnostics) and its two
+// floors (none for twins and without floors).
 struct generated_variant {
     aogen::codegen::plan shipped, diagnostic;
-    std::vector<aogen::codegen::shader_source> shipped_sources, diagnostic_sources, floor_sources, bandwidth_sources;
+    std::vector<aogen::codegen::shader_source> shipped_sources, diagnostic_sources;
+    std::vector<floor_shaders> floors; // the fetch floor, then the bandwidth floor; or none
 };
 
 inline generated_variant generate_variant(const aogen::variant& v, bool floor)
 {
     aogen::codegen::options d;
     d.diagnostics = true;
-    generated_variant g{aogen::codegen::make_plan(v), aogen::codegen::make_plan(v, d), {}, {}, {}, {}};
+    const aogen::codegen::plan shipped = aogen::codegen::make_plan(v);
+    generated_variant g{shipped, shipped.with_options(d), {}, {}, {}};
     g.shipped_sources = aogen::codegen::generate(g.shipped);
     g.diagnostic_sources = aogen::codegen::generate(g.diagnostic);
-    if (floor) g.floor_sources = floor_sources(v, floor_kind::fetch), g.bandwidth_sources = floor_sources(v, floor_kind::bandwidth);
+    if (floor) {
+        const aogen::codegen::plan base = floor_base(shipped);
+        g.floors = {floor_of(shipped, base, floor_kind::fetch), floor_of(shipped, base, floor_kind::bandwidth)};
+    }
     return g;
 }
 
 // Every source of `g`, for one compile_all.
 inline void append_sources(const generated_variant& g, std::vector<aogen::codegen::shader_source>& out)
 {
-    for (const auto* list : {&g.shipped_sources, &g.diagnostic_sources, &g.floor_sources, &g.bandwidth_sources})
-        out.insert(out.end(), list->begin(), list->end());
+    for (const auto* list : {&g.shipped_sources, &g.diagnostic_sources}) out.insert(out.end(), list->begin(), list->end());
+    for (const floor_shaders& f : g.floors) out.insert(out.end(), f.sources.begin(), f.sources.end());
 }
 
 // The compiled size of each of the variant's shaders, in chain order.
@@ -149,16 +155,13 @@ struct compiled_variant {
 inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const generated_variant& g, aogen::vulkan::spirv_cache& cache)
 {
     compiled_variant c;
-    c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, g.shipped, g.shipped_sources, &cache);
+    c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, g.shipped, &cache); // SPIR-V from the cache: compiled already
     if (g.shipped.axes().stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
-        c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, g.diagnostic, g.diagnostic_sources, &cache);
-    const aogen::variant f = floor_variant(g.shipped.axes());
-    const auto floor = [&](const char* what, const std::vector<aogen::codegen::shader_source>& sources) {
-        return std::make_unique<aogen::vulkan::pass_pipelines>(ctx, std::string(what) + g.shipped.name(), f.stage, f.workgroup_x, f.workgroup_y,
-                                                               sources, &cache);
+        c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, g.diagnostic, &cache);
+    const auto floor = [&](const char* what, const floor_shaders& f) {
+        return std::make_unique<aogen::vulkan::pass_pipelines>(ctx, f.plan, f.sources, &cache, std::string(what) + g.shipped.name());
     };
-    if (!g.floor_sources.empty()) c.floor = floor("the fetch floor of ", g.floor_sources);
-    if (!g.bandwidth_sources.empty()) c.bandwidth = floor("the bandwidth floor of ", g.bandwidth_sources);
+    if (!g.floors.empty()) c.floor = floor("the fetch floor of ", g.floors[0]), c.bandwidth = floor("the bandwidth floor of ", g.floors[1]);
     return c;
 }
 
@@ -177,7 +180,7 @@ inline run_record score(const compiled_variant& c, scene_bench& bench, int frame
 {
     run_record r;
     const aogen::vulkan::chain& chain = c.diagnostic ? *c.diagnostic : *c.shipped;
-    aogen::vulkan::chain_settings settings = default_settings(chain.var(), bench.scene());
+    aogen::vulkan::chain_settings settings = default_settings(chain.plan().axes(), bench.scene());
     const bench_run out = bench.run(chain, settings);
     r.raw = out.out.raw;
     r.ao = ao_readback::of(out.out, out.scale);
@@ -348,10 +351,11 @@ inline void time_scene(aogen::vulkan::context& ctx, const report_settings& setti
         time_group(ctx, group, settings.timing, scene, clocks, scene_clocks);
         group.clear(), group_bytes = 0;
     };
-    const auto add = [&](run_record& run, timed_as what, const aogen::vulkan::pass_pipelines& passes, const aogen::variant& v) {
+    // A floor binds the bytes of its variant's plan (the same blocks: floor_of).
+    const auto add = [&](run_record& run, timed_as what, const aogen::vulkan::pass_pipelines& passes, const aogen::codegen::plan& p) {
+        const aogen::variant& v = p.axes();
         const aogen::vulkan::gpu_gbuffer& g = bench.gpu(v);
-        const auto [tw, th] = aogen::vulkan::target_size(v, bench.width(), bench.height());
-        auto bound = std::make_unique<aogen::vulkan::bound_chain>(ctx, passes, g, aogen::vulkan::inputs_for(v, default_settings(v, scene.scene), tw, th), tw, th);
+        auto bound = std::make_unique<aogen::vulkan::bound_chain>(ctx, passes, g, p.inputs(default_settings(v, scene.scene), g.width(), g.height()));
         group_bytes += output_bytes(*bound);
         group.push_back({&run, what, std::move(bound)});
     };
@@ -359,11 +363,12 @@ inline void time_scene(aogen::vulkan::context& ctx, const report_settings& setti
         run_record& run = out.variants[i].runs.back();
         if (!run.ran()) continue;
         if (group_bytes > settings.bound_bytes) flush();
-        add(run, timed_as::variant, c.variants[i].shipped->passes(), out.variants[i].v);
-        if (c.variants[i].floor) add(run, timed_as::fetch_floor, *c.variants[i].floor, out.variants[i].v);
-        if (c.variants[i].bandwidth) add(run, timed_as::bandwidth_floor, *c.variants[i].bandwidth, out.variants[i].v);
+        const aogen::codegen::plan& p = c.variants[i].shipped->plan();
+        add(run, timed_as::variant, c.variants[i].shipped->passes(), p);
+        if (c.variants[i].floor) add(run, timed_as::fetch_floor, *c.variants[i].floor, p);
+        if (c.variants[i].bandwidth) add(run, timed_as::bandwidth_floor, *c.variants[i].bandwidth, p);
         for (size_t t = 0; t < out.twins.size(); ++t) // the twin right after its variant
-            if (twin_of[t] == int(i) && out.twins[t].runs.back().ran()) add(out.twins[t].runs.back(), timed_as::variant, c.twins[t].shipped->passes(), out.twins[t].v);
+            if (twin_of[t] == int(i) && out.twins[t].runs.back().ran()) add(out.twins[t].runs.back(), timed_as::variant, c.twins[t].shipped->passes(), c.twins[t].shipped->plan());
     }
     flush();
     scene.clocks = clocks_of(scene_clocks);

@@ -9,7 +9,7 @@
 //                          depth convention and normal space), ray-cast on first use and
 //                          uploaded once: every variant of one convention and space shares it
 //                          (gbuffer_cache, for a harness that needs no reference);
-//     run(c, s, inputs)    runs chain c (its variant: c.var()) once with settings s, reads the
+//     run(c, s, inputs)    runs chain c (its variant: c.plan().axes()) once with settings s, reads the
 //                          AO back and upsamples it to the screen, nearest, by the chain's
 //                          output_scale(). With bench_inputs::faults, a copy of the G-buffer
 //                          with the faults planted is uploaded for that run only; with
@@ -19,7 +19,7 @@
 //
 // USAGE
 //     aogen_report::scene_bench bench(ctx, scene, 32);
-//     aogen::vulkan::chain c(ctx, v, aogen::vulkan::chain_options{true});
+//     aogen::vulkan::chain c(ctx, aogen::codegen::make_plan(v, diagnostics));   // codegen::options::diagnostics
 //     aogen_report::bench_run r = bench.run(c, aogen_report::default_settings(v, scene));
 //     compare(r.full, bench.truth().ao, bench.truth().valid).rmse;
 #pragma once
@@ -138,19 +138,18 @@ public:
     // Chain `c` once on this scene with settings `s` (see WHAT).
     bench_run run(const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& s, const bench_inputs& inputs = {})
     {
-        const aogen::variant& v = c.var();
-        const auto [tw, th] = aogen::target_size(v, width(), height());
-        aogen::chain_inputs in = aogen::inputs_for(v, s, tw, th);
+        const aogen::variant& v = c.plan().axes();
+        aogen::chain_inputs in = c.plan().inputs(s, width(), height());
         if (inputs.noise_rotation) {
             const float texel[4] = {inputs.noise_rotation->x, inputs.noise_rotation->y, 0.0f, 1.0f};
             for (size_t i = 0; i + sizeof texel <= in.noise.size(); i += sizeof texel) std::memcpy(in.noise.data() + i, texel, sizeof texel);
         }
         bench_run r;
         if (inputs.faults.empty()) {
-            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), gpu(v), in, tw, th, c.counter()).run_once();
+            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), gpu(v), in, c.counter()).run_once();
         } else {
             const aogen::vulkan::gpu_gbuffer faulted(ctx_, with_faults(gbuffer(v), inputs.faults));
-            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), faulted, in, tw, th, c.counter()).run_once();
+            r.out = aogen::vulkan::bound_chain(ctx_, c.passes(), faulted, in, c.counter()).run_once();
         }
         r.scale = aogen::output_scale(v);
         r.full = upsample(r.out.ao, r.out.width, r.out.height, r.scale, width(), height());

@@ -130,9 +130,9 @@ public:
             const std::string name = aogen::to_name(v);
             if (chains_.count(name) || planned_.count(name)) continue;
             aogen::codegen::plan p = aogen::codegen::make_plan(v, options());
-            std::vector<aogen::codegen::shader_source> s = aogen::codegen::generate(p);
+            const std::vector<aogen::codegen::shader_source> s = aogen::codegen::generate(p);
             sources.insert(sources.end(), s.begin(), s.end());
-            planned_.emplace(name, planned_chain{std::move(p), std::move(s)});
+            planned_.emplace(name, std::move(p));
         }
         spirv_.compile_all(sources);
     }
@@ -144,16 +144,12 @@ public:
         if (it != chains_.end()) return *it->second;
         auto planned = planned_.find(name);
         if (planned == planned_.end()) prepare({v}), planned = planned_.find(name);
-        auto chain = std::make_unique<aogen::vulkan::chain>(ctx_, planned->second.plan, planned->second.sources, &spirv_);
+        auto chain = std::make_unique<aogen::vulkan::chain>(ctx_, planned->second, &spirv_); // its SPIR-V compiled by prepare()
         planned_.erase(planned);
         return *chains_.emplace(name, std::move(chain)).first->second;
     }
 
 private:
-    struct planned_chain {
-        aogen::codegen::plan plan;
-        std::vector<aogen::codegen::shader_source> sources;
-    };
     aogen::codegen::options options() const
     {
         aogen::codegen::options o;
@@ -165,7 +161,7 @@ private:
     aogen::vulkan::context& ctx_;
     aogen::codegen::template_reader templates_;
     aogen::vulkan::spirv_cache spirv_;
-    std::map<std::string, planned_chain> planned_;
+    std::map<std::string, aogen::codegen::plan> planned_; // planned and compiled, not yet built
     std::map<std::string, std::unique_ptr<aogen::vulkan::chain>> chains_;
 };
 

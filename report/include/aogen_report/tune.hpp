@@ -107,7 +107,7 @@ using settings_maker = std::function<aogen::vulkan::chain_settings(const aogen::
 inline double mean_rmse(const aogen::vulkan::chain& c, std::vector<std::unique_ptr<scene_bench>>& scenes, const settings_maker& make)
 {
     double sum = 0;
-    for (auto& s : scenes) sum += compare(s->run(c, make(c.var(), s->scene())).full, s->truth().ao, s->truth().valid).rmse;
+    for (auto& s : scenes) sum += compare(s->run(c, make(c.plan().axes(), s->scene())).full, s->truth().ao, s->truth().valid).rmse;
     return scenes.empty() ? 0.0 : sum / double(scenes.size());
 }
 
@@ -124,7 +124,7 @@ inline tune_result tune(aogen::vulkan::context& ctx, const tune_settings& t)
         if (tune_axes(v).size() != tune_axes(t.variants.front()).size() || v.tech != t.variants.front().tech)
             aogen::fail("tune", aogen::to_name(v) + " is not the technique of " + aogen::to_name(t.variants.front()), "valid: variants of one technique");
         r.variants.push_back(aogen::to_name(v));
-        chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, v));
+        chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, aogen::codegen::make_plan(v)));
     }
     std::vector<std::unique_ptr<scene_bench>> train, validate;
     for (const aogen::scenes::scene& s : t.train) require_radius_works(s), train.push_back(std::make_unique<scene_bench>(ctx, s, t.grid));
