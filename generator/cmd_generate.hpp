@@ -79,7 +79,7 @@ public:
     // plan_for(p, target), which plans nothing again).
     void add(const codegen::plan& p, const feature_list& features)
     {
-        const variant& v = p.axes();
+        const variant& v = p.variant();
         const std::string name = p.name();
         const std::string ns = identifier(name);
         nlohmann::ordered_json entry;

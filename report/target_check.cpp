@@ -60,7 +60,7 @@ int main(int argc, char** argv)
         else for (const std::string& n : aogen_report::comma_list(variants)) vs.push_back(aogen::variant_from_name(n));
         namespace cc = aogen::compile;
         // wgsl is checked twice: on Dawn, and through naga's round trip.
-        const std::vector<cc::target> checkable{cc::target::glsl, cc::target::essl, cc::target::hlsl50, cc::target::hlsl60, cc::target::wgsl};
+        const std::vector<cc::target> checkable{cc::target::glsl, cc::target::essl, cc::target::hlsl, cc::target::hlsl60, cc::target::wgsl};
         const char* const names[] = {"glsl (OpenGL 4.5)", "essl (OpenGL ES 3.2)", "hlsl sm50 (glslang round trip)", "hlsl sm60 (glslang round trip)",
                                      "wgsl (naga round trip)", "wgsl (Dawn, OpenGL ES backend)"};
         std::vector<int> chosen; // indices into checkable
@@ -82,7 +82,7 @@ int main(int argc, char** argv)
         // WGSL form (compile.hpp refuses them), like GLSL and ESSL.
         std::vector<aogen::codegen::plan> wgsl_plans;
         for (const aogen::codegen::plan& p : plans)
-            if (!p.axes().fp16) wgsl_plans.push_back(p);
+            if (!p.variant().fp16) wgsl_plans.push_back(p);
         std::optional<aogen::vulkan::wgsl_round_trips> wgsl;
         if (wanted(4) || wanted(5)) wgsl.emplace(wgsl_plans);
         tally t[6];
@@ -93,7 +93,7 @@ int main(int argc, char** argv)
             aogen_report::gbuffer_cache gbuffers(vk, s, *tracer);
             std::cerr << "aogen_target_check: scene " << s.name << "\n";
             for (const aogen::codegen::plan& p : plans) {
-                const aogen::variant& v = p.axes();
+                const aogen::variant& v = p.variant();
                 const std::string& name = p.name();
                 if (!aogen_report::cannot_run(v, s).empty()) continue; // an orthographic variant on a perspective camera, ...
                 const aogen::chain_inputs in = p.inputs(aogen_report::default_settings(v, s), w, h);
@@ -117,7 +117,7 @@ int main(int argc, char** argv)
                         const aogen::codegen::plan planned = aogen::plan_for(p, target);
                         return aogen::gl::run(k == 0 ? gl : es, planned, aogen::emitted_texts(planned, target), gbuffers.host(v), in).ao;
                     }
-                    const aogen::compile::target hlsl = k == 2 ? aogen::compile::target::hlsl50 : aogen::compile::target::hlsl60;
+                    const aogen::compile::target hlsl = k == 2 ? aogen::compile::target::hlsl : aogen::compile::target::hlsl60;
                     return aogen::vulkan::bound_chain(vk, *aogen::vulkan::hlsl_round_trip(vk, p, hlsl), gbuffers.gpu(v), in).run_once().ao;
                 };
                 for (int k = 0; k < 6; ++k) {

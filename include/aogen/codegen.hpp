@@ -282,7 +282,7 @@ inline std::vector<shader_source> generate(const plan& p)
     const template_reader& own = p.source_options().templates;
     const template_reader read = own ? own : template_reader(embedded_template);
     std::vector<shader_source> out;
-    for (const shader_plan& s : p.shaders()) out.push_back(detail::write_shader(s, p.axes(), p.source_options(), read));
+    for (const shader_plan& s : p.shaders()) out.push_back(detail::write_shader(s, p.variant(), p.source_options(), read));
     return out;
 }
 

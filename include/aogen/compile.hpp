@@ -34,7 +34,7 @@
 //     cc::compiled out = cc::compile(glsl, cc::shader_stage::compute, "ssao-s16-...-cs ao",
 //                                    cc::all_targets);
 //     out.spirv;                                   // std::vector<uint32_t>
-//     out.text.at(cc::target::hlsl50);             // the HLSL source
+//     out.text.at(cc::target::hlsl);             // the HLSL source
 //     out.refl.entry_points.at(cc::target::msl_macos);   // "main0"
 //     out.refl;                                    // the reflection: see reflect.hpp
 //
@@ -84,7 +84,7 @@
 //     SPIRV-Cross writes OpenGL's 16-bit floats only through GL_AMD_gpu_shader_half_float
 //     or GL_NV_gpu_shader5 (#error otherwise), which no portable shader may assume. HLSL
 //     gets min16float, MSL half.
-//   - hlsl50 / hlsl60: shader_model 50 / 60 (SPIRV-Cross's default is 30, where compute
+//   - hlsl / hlsl60: shader_model 50 / 60 (SPIRV-Cross's default is 30, where compute
 //     shaders and UAVs do not exist). Registers come from the bindings (b/t/s/u N); SM 5.1+
 //     adds `space<set>`; SM 5.0 has no spaces, so there bindings must be distinct across
 //     sets (a register two resources share is an aogen::error for hlsl, naming both).
@@ -532,14 +532,14 @@ inline std::string cross_compile(const std::vector<uint32_t>& spirv, shader_stag
             if (entry_point) *entry_point = "main";
             return text;
         }
-        case target::hlsl50:
+        case target::hlsl:
         case target::hlsl60: {
             spirv_cross::CompilerHLSL hlsl(spirv);
             spirv_cross::CompilerHLSL::Options o = hlsl.get_hlsl_options();
-            o.shader_model = t == target::hlsl50 ? 50 : 60;
+            o.shader_model = t == target::hlsl ? 50 : 60;
             hlsl.set_hlsl_options(o);
             std::string text = hlsl.compile();
-            if (t == target::hlsl50) detail::require_distinct_registers(text, name);
+            if (t == target::hlsl) detail::require_distinct_registers(text, name);
             if (entry_point) *entry_point = hlsl.get_cleansed_entry_point_name("main", model);
             return text;
         }

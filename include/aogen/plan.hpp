@@ -383,7 +383,7 @@ inline std::atomic<unsigned long>& plans_made()
 // A variant planned once (see WHAT). Read-only; make_plan is the only way to make one.
 class plan {
 public:
-    const variant& axes() const { return axes_; }              // the variant, canonical
+    const aogen::variant& variant() const { return variant_; } // the variant, canonical
     const std::string& name() const { return name_; }          // its canonical name
     const options& source_options() const { return options_; } // what the sources are generated with
     const std::vector<pass_kind>& passes() const { return passes_; }
@@ -393,9 +393,9 @@ public:
     const shader_plan& pass_shader(size_t i) const { return shaders_.at((i + 1) * per_pass() - 1); }
 
     // The AO target for a G-buffer of w × h: its size, or half of it rounded up.
-    std::pair<int, int> target_size(int w, int h) const { return aogen::target_size(axes_, w, h); }
+    std::pair<int, int> target_size(int w, int h) const { return aogen::target_size(variant_, w, h); }
     // What the chain returns for a G-buffer of w × h: the screen's size after an upsample pass.
-    std::pair<int, int> output_size(int w, int h) const { return aogen::output_size(axes_, w, h); }
+    std::pair<int, int> output_size(int w, int h) const { return aogen::output_size(variant_, w, h); }
 
     // What the chain reads besides a w × h G-buffer with settings `s`: each pass's uniform
     // bytes, written into the layout planned once (nothing is laid out again, frame after
@@ -405,7 +405,7 @@ public:
         std::vector<const layout::struct_layout*> blocks;
         for (size_t i = 0; i < passes_.size(); ++i) blocks.push_back(&pass_shader(i).layout);
         const auto [tw, th] = target_size(w, h);
-        return aogen::detail::pack_inputs(axes_, s, tw, th, blocks);
+        return aogen::detail::pack_inputs(variant_, s, tw, th, blocks);
     }
 
     // This plan under other options (a target's binding model or output format, diagnostics,
@@ -414,19 +414,19 @@ public:
     plan with_options(const options& o) const
     {
         validate(o);
-        output_format_of(axes_, o);
+        output_format_of(variant_, o);
         plan p = *this;
         p.options_ = o;
         for (shader_plan& s : p.shaders_)
-            if (s.stage != shader_stage::vertex) s.resources = detail::resources_of(axes_, s.pass, s.stage, o);
+            if (s.stage != shader_stage::vertex) s.resources = detail::resources_of(variant_, s.pass, s.stage, o);
         return p;
     }
 
 private:
     plan() = default;
-    friend plan make_plan(const variant& v, const options& o);
-    size_t per_pass() const { return axes_.stage == pipeline_stage::compute ? 1 : 2; }
-    variant axes_;
+    friend plan make_plan(const aogen::variant& v, const options& o);
+    size_t per_pass() const { return variant_.stage == pipeline_stage::compute ? 1 : 2; }
+    aogen::variant variant_;
     std::string name_;
     options options_;
     std::vector<pass_kind> passes_;
@@ -441,25 +441,25 @@ inline plan make_plan(const variant& v, const options& o)
     output_format_of(v, o); // the pair: a -bn variant's four channels
     ++detail::plans_made();
     plan p;
-    p.axes_ = canonical(v);
-    p.name_ = aogen::detail::name_of(p.axes_);
+    p.variant_ = canonical(v);
+    p.name_ = aogen::detail::name_of(p.variant_);
     p.options_ = o;
-    p.passes_ = aogen::passes(p.axes_);
+    p.passes_ = aogen::passes(p.variant_);
     for (pass_kind pass : p.passes_)
-        for (shader_stage stage : stages(p.axes_)) {
+        for (shader_stage stage : stages(p.variant_)) {
             shader_plan s;
             s.pass = pass;
             s.stage = stage;
             s.name = p.name_ + "." + names::name_of(pass_kind_names, pass, "pass") + "." + file_extension(stage);
-            s.files = detail::template_files_of(p.axes_, pass, stage);
+            s.files = detail::template_files_of(p.variant_, pass, stage);
             if (stage != shader_stage::vertex) {
-                s.defines = detail::defines_of(p.axes_, pass);
-                s.resources = detail::resources_of(p.axes_, pass, stage, o);
-                s.constants = detail::constants_of(p.axes_, pass);
-                s.block = detail::uniform_block_of(p.axes_, pass);
+                s.defines = detail::defines_of(p.variant_, pass);
+                s.resources = detail::resources_of(p.variant_, pass, stage, o);
+                s.constants = detail::constants_of(p.variant_, pass);
+                s.block = detail::uniform_block_of(p.variant_, pass);
                 s.layout = layout::compute(s.block, layout::rules::std140);
-                s.pixels_per_invocation = pixels_per_invocation(pass, p.axes_.stage);
-                if (stage == shader_stage::compute) s.workgroup = workgroup_of(p.axes_, pass);
+                s.pixels_per_invocation = pixels_per_invocation(pass, p.variant_.stage);
+                if (stage == shader_stage::compute) s.workgroup = workgroup_of(p.variant_, pass);
             }
             p.shaders_.push_back(std::move(s));
         }

@@ -1,7 +1,7 @@
 // aogen/targets.hpp — the languages compile() makes from a stage's GLSL: one row each.
 //
 // WHAT
-//   aogen::compile::target   spv, glsl, essl, hlsl50, hlsl60, msl_macos, msl_ios, wgsl, with
+//   aogen::compile::target   spv, glsl, essl, hlsl, hlsl60, msl_macos, msl_ios, wgsl, with
 //                            their command-line names ("hlsl" is SM 5.0, "msl" macOS)
 //   target_table             one row per target, every fact about it in one place: its name,
 //                            the extension `aogen generate` gives its files, whether
@@ -15,7 +15,7 @@
 // USAGE
 //     #include <aogen/targets.hpp>
 //     aogen::compile::target_from_name("msl");   // target::msl_macos
-//     aogen::compile::info(target::hlsl50).extension;   // "sm50.hlsl"
+//     aogen::compile::info(target::hlsl).extension;   // "sm50.hlsl"
 //     aogen::compile::target_list();             // "spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl"
 //
 // ERRORS
@@ -44,12 +44,12 @@ using aogen::shader_stage_from_name;
 
 // What compile() makes: compile.hpp says what each target is.
 
-enum class target { spv, glsl, essl, hlsl50, hlsl60, msl_macos, msl_ios, wgsl };
+enum class target { spv, glsl, essl, hlsl, hlsl60, msl_macos, msl_ios, wgsl };
 inline constexpr std::array<enum_name<target>, 8> target_names{{
     {target::spv, "spv"},
     {target::glsl, "glsl"},
     {target::essl, "essl"},
-    {target::hlsl50, "hlsl"},
+    {target::hlsl, "hlsl"},
     {target::hlsl60, "hlsl60"},
     {target::msl_macos, "msl"},
     {target::msl_ios, "msl_ios"},
@@ -89,7 +89,7 @@ inline constexpr std::array<target_info, target_names.size()> target_table{{
     {target::spv, "spv", false, true, false, false, verification::executed, verification::executed},
     {target::glsl, "glsl", true, true, false, false, verification::executed, verification::executed},
     {target::essl, "essl", true, true, true, false, verification::executed, verification::executed},
-    {target::hlsl50, "sm50.hlsl", true, true, false, false, verification::round_tripped, verification::validated},
+    {target::hlsl, "sm50.hlsl", true, true, false, false, verification::round_tripped, verification::validated},
     {target::hlsl60, "sm60.hlsl", true, true, false, false, verification::round_tripped, verification::validated},
     {target::msl_macos, "macos.metal", true, true, false, false, verification::validated, verification::validated},
     {target::msl_ios, "ios.metal", true, true, false, false, verification::validated, verification::validated},

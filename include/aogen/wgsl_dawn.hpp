@@ -23,7 +23,7 @@ namespace aogen::wgsl {
 // are what the runner binds and dispatches.
 inline dawn_result run_variant_on_dawn(const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
 {
-    const variant& v = p.axes();
+    const variant& v = p.variant();
     if (has_prefilter_pass(v))
         fail("wgsl on dawn", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");

@@ -261,7 +261,7 @@ std::map<cc::target, std::vector<uint32_t>> revalidate(const cc::compiled& out, 
             CHECK(es.log == "");
             break;
         }
-        case cc::target::hlsl50:
+        case cc::target::hlsl:
         case cc::target::hlsl60: {
             CHECK(entry == "main");
             CHECK(text.find(" main(") != std::string::npos);
@@ -313,7 +313,7 @@ aogen::layout::block_desc ssao_test_block()
             {{"Light", {{"color", "vec3"}, {"intensity", "float"}}}}};
 }
 
-const std::vector<cc::target> all_but_essl{cc::target::spv,    cc::target::glsl,      cc::target::hlsl50,
+const std::vector<cc::target> all_but_essl{cc::target::spv,    cc::target::glsl,      cc::target::hlsl,
                                            cc::target::hlsl60, cc::target::msl_macos, cc::target::msl_ios};
 
 } // namespace
@@ -326,7 +326,7 @@ TEST_CASE("compile: target and stage names", "[compile]")
     CHECK(cc::spirv_cross_targets.size() + 1 == cc::all_targets.size()); // all but wgsl (naga's)
     for (cc::target t : cc::all_targets) CHECK(cc::target_from_name(cc::to_name(t)) == t);
     CHECK(cc::target_from_name("msl-ios") == cc::target::msl_ios);
-    CHECK(cc::target_from_name("hlsl") == cc::target::hlsl50);
+    CHECK(cc::target_from_name("hlsl") == cc::target::hlsl);
     CHECK(error_of([] { cc::target_from_name("dxil", "--target"); }) ==
           "--target: 'dxil' is not a known name (valid: spv, glsl, essl, hlsl, hlsl60, msl, msl_ios, wgsl)");
     CHECK(cc::shader_stage_from_name("fragment") == cc::shader_stage::fragment);
@@ -377,10 +377,10 @@ TEST_CASE("compile: compute shader to every target but essl (r8 output), re-vali
     CHECK(glsl.find("layout(binding = 1) uniform sampler2D depth_tex;") != std::string::npos);
     CHECK(glsl.find("layout(binding = 2, r8) uniform writeonly image2D ao_out;") != std::string::npos);
     CHECK(glsl.find("layout(local_size_x = 8, local_size_y = 4, local_size_z = 1) in;") != std::string::npos);
-    CHECK(out.text.at(cc::target::hlsl50).find("cbuffer SsaoTest : register(b0)") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("cbuffer SsaoTest : register(b0)") != std::string::npos);
     CHECK(out.text.at(cc::target::hlsl60).find("cbuffer SsaoTest : register(b0, space0)") != std::string::npos);
-    CHECK(out.text.at(cc::target::hlsl50).find("[numthreads(8, 4, 1)]") != std::string::npos);
-    CHECK(out.text.at(cc::target::hlsl50).find("RWTexture2D<unorm float> ao_out : register(u2)") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("[numthreads(8, 4, 1)]") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("RWTexture2D<unorm float> ao_out : register(u2)") != std::string::npos);
     CHECK(out.text.at(cc::target::msl_macos).find("kernel void main0(constant SsaoTest& u [[buffer(0)]]") != std::string::npos);
     CHECK(out.text.at(cc::target::msl_macos).find("texture2d<float, access::write> ao_out [[texture(1)]]") != std::string::npos);
 
@@ -525,9 +525,9 @@ TEST_CASE("compile: fragment shader with a separate texture and sampler, re-vali
     CHECK(essl.find("layout(std140) uniform BlurTest") != std::string::npos);
     CHECK(essl.find("binding") == std::string::npos);
     // HLSL: registers from the bindings; SM 5.0 has no spaces, SM 6.0 has set 1's.
-    CHECK(out.text.at(cc::target::hlsl50).find("cbuffer BlurTest : register(b0)") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("cbuffer BlurTest : register(b0)") != std::string::npos);
     CHECK(out.text.at(cc::target::hlsl60).find("cbuffer BlurTest : register(b0, space1)") != std::string::npos);
-    CHECK(out.text.at(cc::target::hlsl50).find("SamplerState point_sampler : register(s1);") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("SamplerState point_sampler : register(s1);") != std::string::npos);
     CHECK(out.text.at(cc::target::msl_macos).find("fragment main0_out main0(") != std::string::npos);
 
     const cc::buffer_block* block = cc::find_block(r, "BlurTest");
@@ -551,7 +551,7 @@ TEST_CASE("compile: vertex shader, re-validated", "[compile]")
     CHECK(out.text.at(cc::target::essl).rfind("#version 300 es\nprecision highp float;\nprecision highp int;\n\n", 0) == 0);
     CHECK(out.text.at(cc::target::glsl).find("gl_VertexID") != std::string::npos);
     CHECK(out.text.at(cc::target::glsl).find("SPIRV_Cross_BaseInstance") == std::string::npos);
-    CHECK(out.text.at(cc::target::hlsl50).find("SV_VertexID") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("SV_VertexID") != std::string::npos);
     CHECK(out.text.at(cc::target::msl_ios).find("vertex main0_out main0(") != std::string::npos);
 }
 
@@ -578,7 +578,7 @@ TEST_CASE("compile: storage buffers, push constants and unused bindings", "[comp
     CHECK(unused.name == "unused_tex");
     CHECK(unused.kind == cc::descriptor_kind::combined_image_sampler);
     CHECK(unused.msl_texture == cc::no_index);
-    CHECK(out.text.at(cc::target::hlsl50).find("unused_tex : register(t2)") != std::string::npos);
+    CHECK(out.text.at(cc::target::hlsl).find("unused_tex : register(t2)") != std::string::npos);
     CHECK(out.text.at(cc::target::glsl).find("layout(binding = 2) uniform sampler2D unused_tex;") != std::string::npos);
     CHECK(out.text.at(cc::target::msl_macos).find("unused_tex") == std::string::npos);
     const cc::descriptor_binding& textures = r.bindings[3];
@@ -615,7 +615,7 @@ TEST_CASE("compile: hlsl (SM 5.0) refuses two sets' resources in one register", 
 {
     std::string source = storage_source;
     source.replace(source.find("binding = 3"), 11, "binding = 0");
-    const std::string e = error_of([&] { cc::compile(source, cc::shader_stage::compute, "s", {cc::target::hlsl50}); });
+    const std::string e = error_of([&] { cc::compile(source, cc::shader_stage::compute, "s", {cc::target::hlsl}); });
     CHECK(e == "s: hlsl: register t0 holds both src and textures; shader model 5.0 has no register spaces, so bindings of "
                "different sets collide (valid: bindings distinct across descriptor sets for each register kind, or the hlsl60 target)");
     // SM 6.0 has spaces: the same source is fine there.
@@ -636,8 +636,8 @@ void main()
     imageStore(result, ivec2(gl_GlobalInvocationID.xy), vec4(float(h)));
 }
 )";
-    const cc::compiled out = cc::compile(source, cc::shader_stage::compute, "h", {cc::target::hlsl50, cc::target::msl_macos});
-    CHECK(out.text.at(cc::target::hlsl50).find("min16float") != std::string::npos);
+    const cc::compiled out = cc::compile(source, cc::shader_stage::compute, "h", {cc::target::hlsl, cc::target::msl_macos});
+    CHECK(out.text.at(cc::target::hlsl).find("min16float") != std::string::npos);
     CHECK(out.text.at(cc::target::msl_macos).find("half") != std::string::npos);
     for (cc::target t : {cc::target::glsl, cc::target::essl})
         CHECK_THAT(error_of([&] { cc::compile(source, cc::shader_stage::compute, "h", {t}); }),
@@ -651,7 +651,7 @@ TEST_CASE("compile: same input, same bytes", "[compile]")
     const cc::compiled a = cc::compile(source, cc::shader_stage::compute, "a", cc::spirv_cross_targets);
     const cc::compiled b = cc::compile(source, cc::shader_stage::compute, "b",
                                        {cc::target::msl_ios, cc::target::essl, cc::target::hlsl60, cc::target::glsl,
-                                        cc::target::msl_macos, cc::target::hlsl50, cc::target::glsl});
+                                        cc::target::msl_macos, cc::target::hlsl, cc::target::glsl});
     CHECK(a.spirv == b.spirv);
     CHECK(a.text == b.text);
     CHECK(a.refl.entry_points == b.refl.entry_points);

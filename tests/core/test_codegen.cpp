@@ -537,7 +537,7 @@ TEST_CASE("codegen: a plan holds what the public part functions return", "[codeg
         const codegen::plan p = codegen::make_plan(v);
         INFO(p.name());
         CHECK(p.name() == to_name(v));
-        CHECK(p.axes() == v);
+        CHECK(p.variant() == v);
         CHECK(p.passes() == passes(v));
         size_t i = 0;
         for (pass_kind pass : passes(v))

@@ -42,7 +42,7 @@ TEST_CASE("vulkan: the emitted HLSL (SM 5.0, 6.0) round-tripped through glslang 
     const vulkan::gbuffer host = crease(W, H, 0.6f, proj);
     const vulkan::gpu_gbuffer g(*ctx, host);
     const vulkan::chain_settings s = settings_for(proj);
-    for (compile::target target : {compile::target::hlsl50, compile::target::hlsl60})
+    for (compile::target target : {compile::target::hlsl, compile::target::hlsl60})
         for (const char* name : emitted_target_variants) {
             const variant v = variant_from_name(name);
             INFO(compile::to_name(target) << " " << name);

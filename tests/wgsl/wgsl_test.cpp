@@ -28,7 +28,7 @@ TEST_CASE("wgsl: the emitted WGSL, validated by naga and Tint and round-tripped 
     const vulkan::gbuffer analytic = crease(W, H, 0.6f, proj);
     const ray_cast_crease scene;
     for (const codegen::plan& p : plans) {
-        const variant& v = p.axes();
+        const variant& v = p.variant();
         INFO(p.name());
         const std::unique_ptr<vulkan::pass_pipelines> passes = trips.passes(*ctx, p);
         for (const std::string& text : trips.texts(p)) CHECK((text.find("@group(0)") != std::string::npos || text.find("@vertex") != std::string::npos));

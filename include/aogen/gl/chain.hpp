@@ -267,7 +267,7 @@ inline void draw(objects& gl, GLuint output, int w, int h)
 inline chain_result run(const context& ctx, const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
 {
     ctx.make_current();
-    const variant& v = p.axes();
+    const variant& v = p.variant();
     if (has_prefilter_pass(v))
         fail("gl chain", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");

@@ -5,7 +5,7 @@
 //         aogen::vulkan::hlsl_round_trip(ctx, v, aogen::compile::target::hlsl60);
 //     aogen::vulkan::bound_chain(ctx, *p, g, inputs, tw, th).run_once();   // as the variant's own
 //
-// Each pass's GLSL goes to `target` (hlsl50 or hlsl60) through compile.hpp, as `aogen generate`
+// Each pass's GLSL goes to `target` (hlsl or hlsl60) through compile.hpp, as `aogen generate`
 // writes it, and back to SPIR-V through compile::hlsl_to_spirv (glslang's HLSL front end); the
 // passes keep the variant's resources, so they bind and run like its SPIR-V. What it checks:
 // the HLSL's meaning as glslang reads it, not DXC's or FXC's code generation.
@@ -23,7 +23,7 @@ namespace aogen::vulkan {
 // (emitted_texts(p, target), or a copy a test has edited).
 inline std::unique_ptr<pass_pipelines> hlsl_passes(context& ctx, const codegen::plan& p, compile::target target, const std::vector<std::string>& hlsl)
 {
-    if (target != compile::target::hlsl50 && target != compile::target::hlsl60)
+    if (target != compile::target::hlsl && target != compile::target::hlsl60)
         fail("hlsl round trip target", compile::to_name(target), "valid: hlsl, hlsl60");
     const codegen::plan planned = plan_for(p, target);
     spirv_cache cache;
@@ -38,7 +38,7 @@ inline std::unique_ptr<pass_pipelines> hlsl_passes(context& ctx, const codegen::
     return std::make_unique<pass_pipelines>(ctx, planned, sources, &cache, p.name() + " (" + compile::to_name(target) + " round trip)");
 }
 
-// The passes of plan `p` built from its emitted HLSL of `target` (hlsl50 or hlsl60).
+// The passes of plan `p` built from its emitted HLSL of `target` (hlsl or hlsl60).
 inline std::unique_ptr<pass_pipelines> hlsl_round_trip(context& ctx, const codegen::plan& p, compile::target target)
 {
     return hlsl_passes(ctx, p, target, emitted_texts(p, target));

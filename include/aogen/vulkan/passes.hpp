@@ -120,11 +120,11 @@ public:
 
     size_t size() const { return passes_.size(); }
     const pass_pipeline& operator[](size_t i) const { return passes_[i]; }
-    bool fragment() const { return plan_.axes().stage == pipeline_stage::fragment; }
+    bool fragment() const { return plan_.variant().stage == pipeline_stage::fragment; }
     const std::string& name() const { return name_; }
     const codegen::plan& plan() const { return plan_; }
     // Do the passes write a bent normal beside the AO (a -bn variant's: .gba of rgba8)?
-    bool bent_normals() const { return plan_.axes().bent_normals; }
+    bool bent_normals() const { return plan_.variant().bent_normals; }
 
     // Where the passes read their inputs (uploads and the previous pass's output).
     VkPipelineStageFlags reader_stage() const

@@ -115,8 +115,8 @@ struct floor_shaders {
 // only a fragment or point-cloud variant's twin, another variant, is planned.
 inline aogen::codegen::plan floor_base(const aogen::codegen::plan& p)
 {
-    const aogen::variant twin = floor_variant(p.axes());
-    return twin == p.axes() ? p : aogen::codegen::make_plan(twin);
+    const aogen::variant twin = floor_variant(p.variant());
+    return twin == p.variant() ? p : aogen::codegen::make_plan(twin);
 }
 
 // One floor of the planned variant `p`: `base` (floor_base(p)) under the templates of `kind`

@@ -156,7 +156,7 @@ inline compiled_variant compile_variant(aogen::vulkan::context& ctx, const gener
 {
     compiled_variant c;
     c.shipped = std::make_unique<aogen::vulkan::chain>(ctx, g.shipped, &cache); // SPIR-V from the cache: compiled already
-    if (g.shipped.axes().stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
+    if (g.shipped.variant().stage == aogen::pipeline_stage::compute || ctx.fragment_stores())
         c.diagnostic = std::make_unique<aogen::vulkan::chain>(ctx, g.diagnostic, &cache);
     const auto floor = [&](const char* what, const floor_shaders& f) {
         return std::make_unique<aogen::vulkan::pass_pipelines>(ctx, f.plan, f.sources, &cache, std::string(what) + g.shipped.name());
@@ -180,7 +180,7 @@ inline run_record score(const compiled_variant& c, scene_bench& bench, int frame
 {
     run_record r;
     const aogen::vulkan::chain& chain = c.diagnostic ? *c.diagnostic : *c.shipped;
-    aogen::vulkan::chain_settings settings = default_settings(chain.plan().axes(), bench.scene());
+    aogen::vulkan::chain_settings settings = default_settings(chain.plan().variant(), bench.scene());
     const bench_run out = bench.run(chain, settings);
     r.raw = out.out.raw;
     r.ao = ao_readback::of(out.out, out.scale);
@@ -353,7 +353,7 @@ inline void time_scene(aogen::vulkan::context& ctx, const report_settings& setti
     };
     // A floor binds the bytes of its variant's plan (the same blocks: floor_of).
     const auto add = [&](run_record& run, timed_as what, const aogen::vulkan::pass_pipelines& passes, const aogen::codegen::plan& p) {
-        const aogen::variant& v = p.axes();
+        const aogen::variant& v = p.variant();
         const aogen::vulkan::gpu_gbuffer& g = bench.gpu(v);
         auto bound = std::make_unique<aogen::vulkan::bound_chain>(ctx, passes, g, p.inputs(default_settings(v, scene.scene), g.width(), g.height()));
         group_bytes += output_bytes(*bound);

@@ -9,7 +9,7 @@
 //                          depth convention and normal space), ray-cast on first use and
 //                          uploaded once: every variant of one convention and space shares it
 //                          (gbuffer_cache, for a harness that needs no reference);
-//     run(c, s, inputs)    runs chain c (its variant: c.plan().axes()) once with settings s, reads the
+//     run(c, s, inputs)    runs chain c (its variant: c.plan().variant()) once with settings s, reads the
 //                          AO back and upsamples it to the screen, nearest, by the chain's
 //                          output_scale(). With bench_inputs::faults, a copy of the G-buffer
 //                          with the faults planted is uploaded for that run only; with
@@ -138,7 +138,7 @@ public:
     // Chain `c` once on this scene with settings `s` (see WHAT).
     bench_run run(const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& s, const bench_inputs& inputs = {})
     {
-        const aogen::variant& v = c.plan().axes();
+        const aogen::variant& v = c.plan().variant();
         aogen::chain_inputs in = c.plan().inputs(s, width(), height());
         if (inputs.noise_rotation) {
             const float texel[4] = {inputs.noise_rotation->x, inputs.noise_rotation->y, 0.0f, 1.0f};

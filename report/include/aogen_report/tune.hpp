@@ -107,7 +107,7 @@ using settings_maker = std::function<aogen::vulkan::chain_settings(const aogen::
 inline double mean_rmse(const aogen::vulkan::chain& c, std::vector<std::unique_ptr<scene_bench>>& scenes, const settings_maker& make)
 {
     double sum = 0;
-    for (auto& s : scenes) sum += compare(s->run(c, make(c.plan().axes(), s->scene())).full, s->truth().ao, s->truth().valid).rmse;
+    for (auto& s : scenes) sum += compare(s->run(c, make(c.plan().variant(), s->scene())).full, s->truth().ao, s->truth().valid).rmse;
     return scenes.empty() ? 0.0 : sum / double(scenes.size());
 }
 
