@@ -130,6 +130,21 @@ public:
         }
     }
 
+    // New uniform bytes for every pass, the same sizes (another frame of the same settings:
+    // plan.inputs with another chain_settings::frame); the noise tile, the G-buffer and the
+    // outputs stay as bound. A frame loop runs one binding frame after frame this way.
+    void set_uniforms(const chain_inputs& in)
+    {
+        bool same = in.uniforms.size() == uniforms_.size();
+        for (size_t i = 0; same && i < uniforms_.size(); ++i) same = in.uniforms[i].size() == uniforms_[i].second;
+        if (!same) throw error("vulkan bound chain: new uniform bytes for " + passes_.name() + " of other sizes (valid: one block per pass, as bound)");
+        resource_scope staging(ctx_);
+        VkCommandBuffer cb = staging.begin_commands();
+        for (size_t i = 0; i < uniforms_.size(); ++i)
+            scope_.update_buffer(cb, uniforms_[i].first, in.uniforms[i].data(), in.uniforms[i].size(), passes_.reader_stage(), staging);
+        staging.submit(cb);
+    }
+
     // Every output filled with `clear`, the chain run once, the last output read back.
     chain_result run_once(float clear = 0.0f) const
     {

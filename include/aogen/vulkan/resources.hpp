@@ -13,6 +13,7 @@
 //     upload              an image filled from host bytes through a staging buffer (into
 //                         the depth aspect for a depth format), left in SHADER_READ_ONLY_OPTIMAL
 //     upload_buffer       a device-local buffer filled from host bytes through a staging buffer
+//     update_buffer       new bytes for such a buffer, the same way
 //     clear               an image filled with one colour (vkCmdClearColorImage)
 //     read_back           a copy of an image into a mapped buffer the host can read
 //     make_sampler        a nearest-filtering sampler (clamped or repeating)
@@ -159,12 +160,21 @@ public:
                          resource_scope& staging)
     {
         const buffer r = make_device_buffer(size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        update_buffer(cb, r, bytes, size, readers, staging);
+        return r;
+    }
+
+    // `size` bytes copied into the start of `target` (a buffer upload_buffer made) through a
+    // staging buffer of `staging`, made visible to shader reads in `readers`. Whatever read
+    // `target` before must have finished (a submission waited for).
+    void update_buffer(VkCommandBuffer cb, const buffer& target, const void* bytes, size_t size, VkPipelineStageFlags readers,
+                       resource_scope& staging)
+    {
         const buffer source = staging.make_host_buffer(bytes, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         const VkBufferCopy region{0, 0, size};
-        vkCmdCopyBuffer(cb, source.handle, r.handle, 1, &region);
-        buffer_barrier(cb, r, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_UNIFORM_READ_BIT | VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+        vkCmdCopyBuffer(cb, source.handle, target.handle, 1, &region);
+        buffer_barrier(cb, target, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_UNIFORM_READ_BIT | VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        readers);
-        return r;
     }
 
     image make_image(int w, int h, VkFormat f, VkImageUsageFlags usage)

@@ -1,6 +1,8 @@
 // aogen_report/page.hpp — report.html: the report as one self-contained page.
 //
 //     std::string html = aogen_report::report_page(data, meta);
+//     aogen_report::page_images images;               // a run's sets after every scene: one cache
+//     std::string again = aogen_report::report_page(data, meta, &images);
 //
 // One file with nothing to fetch: the style sheet and script of page_assets.hpp, the
 // error-against-time plot as inline SVG (svg_plot.hpp), and every variant's AO on every
@@ -35,6 +37,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <sstream>
 #include <utility>
 
@@ -134,22 +137,57 @@ inline std::vector<double> pass_medians(const variant_record& v)
     return out;
 }
 
-// What the script reads: numbers per variant and scene, and the images.
-inline std::string page_data(const report_data& d)
+} // namespace detail
+
+// The page's images as data: URIs, each encoded once: a scene's reference, and a run's AO
+// with the factor the page upsamples it by. Neither changes once its scene is scored, so the
+// report's program keeps one across the sets it writes after every scene: each image is
+// encoded once, not once per set (the sets' writing grew with the square of the scenes).
+// By scene index and (variant index, scene index): for one report's data only.
+class page_images {
+public:
+    const std::string& reference_of(const scene_record& s, size_t scene, const detail::display_grid& g)
+    {
+        auto found = references_.find(scene);
+        if (found == references_.end()) found = references_.emplace(scene, detail::png_uri(detail::reference_png(s.truth, g))).first;
+        return found->second;
+    }
+    const std::pair<std::string, int>& ao_of(const run_record& r, const reference& truth, size_t variant, size_t scene, const detail::display_grid& g)
+    {
+        const auto key = std::make_pair(variant, scene);
+        auto found = ao_.find(key);
+        if (found == ao_.end()) {
+            const auto [png, factor] = detail::ao_png(r.ao, truth, g);
+            found = ao_.emplace(key, std::make_pair(detail::png_uri(png), factor)).first;
+        }
+        return found->second;
+    }
+
+private:
+    std::map<size_t, std::string> references_;
+    std::map<std::pair<size_t, size_t>, std::pair<std::string, int>> ao_;
+};
+
+namespace detail {
+
+// What the script reads: numbers per variant and scene, and the images (from `images`).
+inline std::string page_data(const report_data& d, page_images& images_of)
 {
     nlohmann::json j;
     j["frames"] = d.frames;
     j["scenes"] = nlohmann::json::array();
     j["images"]["reference"] = nlohmann::json::array();
     std::vector<display_grid> grids; // per scene
-    for (const scene_record& s : d.scenes) {
+    for (size_t i = 0; i < d.scenes.size(); ++i) {
+        const scene_record& s = d.scenes[i];
         const display_grid& g = grids.emplace_back(s.truth.width, s.truth.height);
         j["scenes"].push_back({{"name", s.scene.name}, {"width", g.width}, {"height", g.height}});
-        j["images"]["reference"].push_back(png_uri(reference_png(s.truth, g)));
+        j["images"]["reference"].push_back(images_of.reference_of(s, i, g));
     }
     j["variants"] = nlohmann::json::array();
     j["images"]["ao"] = nlohmann::json::array();
-    for (const variant_record& v : d.variants) {
+    for (size_t vi = 0; vi < d.variants.size(); ++vi) {
+        const variant_record& v = d.variants[vi];
         nlohmann::json runs = nlohmann::json::array(), images = nlohmann::json::array();
         for (size_t s = 0; s < v.runs.size(); ++s) {
             const run_record& r = v.runs[s];
@@ -158,11 +196,11 @@ inline std::string page_data(const report_data& d)
                 images.push_back(nullptr);
                 continue;
             }
-            const auto [png, factor] = ao_png(r.ao, d.scenes[s].truth, grids[s]);
+            const auto& [uri, factor] = images_of.ao_of(r, d.scenes[s].truth, vi, s, grids[s]);
             runs.push_back({{"ms", number(r.ms.median)}, {"rmse", number(r.plain.rmse)}, {"rmse_calibrated", number(r.calibrated.rmse)},
                             {"rmse_accumulated", number(r.accumulated.rmse)}, {"bent_degrees", number(r.bent.mean_degrees)},
                             {"power", number(r.power)}, {"factor", factor}});
-            images.push_back(png_uri(png));
+            images.push_back(uri);
         }
         nlohmann::json pass_ms = nlohmann::json::array();
         for (double ms : pass_medians(v)) pass_ms.push_back(number(ms));
@@ -251,8 +289,11 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
 
 } // namespace detail
 
-inline std::string report_page(const report_data& d, const report_meta& meta)
+// `images`: the encoded images of earlier sets of the same report, kept and added to (the
+// program's, across its sets); none: encoded here.
+inline std::string report_page(const report_data& d, const report_meta& meta, page_images* images = nullptr)
 {
+    page_images own;
     std::ostringstream html;
     html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -285,7 +326,7 @@ inline std::string report_page(const report_data& d, const report_meta& meta)
     html << "</section>\n";
     const std::vector<std::string> not_run = not_run_lines(d);
     if (!not_run.empty()) html << "<section id=\"not-run\">\n<h2>Not run</h2>\n" << html_list(not_run) << "</section>\n";
-    html << "<script type=\"application/json\" id=\"aogen-data\">" << detail::page_data(d) << "</script>\n"
+    html << "<script type=\"application/json\" id=\"aogen-data\">" << detail::page_data(d, images ? *images : own) << "</script>\n"
          << "<script>" << page_script << "</script>\n</body>\n</html>\n";
     return html.str();
 }

@@ -120,9 +120,11 @@ struct feature_saving {
     std::vector<std::string> left_out;                                  // what selection left out, and why
 };
 
-// Wall-clock seconds of the report's phases.
+// Wall-clock seconds of the report's phases. `summarise` is the summaries after each scene
+// (calibration, means, Pareto marks); `write`, the file sets written after each scene
+// (the program's scene_done) -- the final set's writing is the program's to add.
 struct phase_times {
-    double compile = 0, trace = 0, score = 0, time = 0;
+    double compile = 0, trace = 0, score = 0, time = 0, summarise = 0, write = 0;
     size_t runs = 0; // variant × scene runs scored (twins included)
 };
 
@@ -130,7 +132,8 @@ struct report_data {
     std::string device;
     int grid = 0;
     int frames = 1;                        // frames averaged for the accumulated error (temporal.hpp)
-    aogen::vulkan::timing_options timing;
+    aogen::vulkan::timing_options timing;  // the protocol that ran (run.hpp's cpu_timing on a CPU device)
+    bool cpu_device = false;               // a CPU device (lavapipe): its times are the CPU's
     bool fetch_floor = true;
     double max_sm_mhz = 0;                 // nvidia-smi's clocks.max.sm; 0 when unknown
     clock_record clocks;                   // every SM clock reading while timing

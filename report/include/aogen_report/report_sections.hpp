@@ -100,12 +100,19 @@ inline std::vector<std::string> measurement_facts(const report_data& d, const re
                         "inner steps), their plain mean scored");
     int fewest = d.timing.iterations, most = 0;
     for (const scene_record& s : d.scenes) fewest = std::min(fewest, s.iterations), most = std::max(most, s.iterations);
-    facts.push_back("Times: per scene, every chain bound once (device-local memory), " + fixed(d.timing.warmup_ms, 0) +
-                    " ms of continuous GPU work first, then " + std::to_string(d.timing.rounds) + " rounds of " +
-                    (fewest == most ? std::to_string(most) : std::to_string(fewest) + "–" + std::to_string(most)) +
-                    " back-to-back iterations of every chain, interleaved" + (d.fetch_floor ? " with their fetch and bandwidth floors" : "") +
-                    (d.timing.budget_ms > 0 ? " (at most " + std::to_string(d.timing.iterations) + ", as many as fit " + fixed(d.timing.budget_ms, 0) + " ms)" : "") +
-                    "; GPU timestamps around every pass; median and p10–p90 of the iterations");
+    const bool one_sample = d.timing.rounds == 1 && d.timing.iterations == 1 && d.timing.warmup_ms <= 0;
+    if (d.cpu_device && one_sample)
+        facts.push_back("Times on a CPU device (run.hpp's cpu_timing): per scene, every chain bound once and run once, interleaved" +
+                        std::string(d.fetch_floor ? " with its fetch and bandwidth floors" : "") +
+                        ", no warm-up (a CPU has no idle clock to bring up); timestamps around every pass, which on a CPU device time "
+                        "the CPU's own work; one sample per chain and scene, a variant's figure its median over the scenes");
+    else
+        facts.push_back("Times: per scene, every chain bound once (device-local memory), " + fixed(d.timing.warmup_ms, 0) +
+                        " ms of continuous GPU work first, then " + std::to_string(d.timing.rounds) + " rounds of " +
+                        (fewest == most ? std::to_string(most) : std::to_string(fewest) + "–" + std::to_string(most)) +
+                        " back-to-back iterations of every chain, interleaved" + (d.fetch_floor ? " with their fetch and bandwidth floors" : "") +
+                        (d.timing.budget_ms > 0 ? " (at most " + std::to_string(d.timing.iterations) + ", as many as fit " + fixed(d.timing.budget_ms, 0) + " ms)" : "") +
+                        "; GPU timestamps around every pass; median and p10–p90 of the iterations");
     facts.push_back("SM clock during the timed rounds: " + detail::clocks_text(d.clocks));
     std::string unsettled;
     for (const scene_record& s : d.scenes)

@@ -7,7 +7,7 @@
 //   { "aogen_report": 2, "device", "command", "rays_per_pixel", "frames", "complete": bool,
 //     "timing": {rounds, iterations, warmup_ms, budget_ms, fetch_floor},   // iterations: the most per round
 //     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
-//     "phases_s": {compile, trace, score, time, runs},
+//     "phases_s": {compile, trace, score, time, summarise, write (the partial sets), runs},
 //     "calibration": "...",
 //     "scenes":   [{name, width, height, ao_radius, valid_pixels, untrusted_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
 //                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
@@ -130,10 +130,11 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
     j["rays_per_pixel"] = d.grid * d.grid;
     j["frames"] = d.frames;
     j["timing"] = {{"rounds", d.timing.rounds}, {"iterations", d.timing.iterations}, {"warmup_ms", d.timing.warmup_ms},
-                   {"budget_ms", d.timing.budget_ms}, {"fetch_floor", d.fetch_floor}};
+                   {"budget_ms", d.timing.budget_ms}, {"fetch_floor", d.fetch_floor}, {"cpu_device", d.cpu_device}};
     j["clocks"] = detail::clocks_json(d.clocks);
     j["clocks"]["max_sm_mhz"] = detail::number(d.max_sm_mhz > 0 ? d.max_sm_mhz : std::nan(""));
-    j["phases_s"] = {{"compile", d.phases.compile}, {"trace", d.phases.trace}, {"score", d.phases.score}, {"time", d.phases.time}, {"runs", d.phases.runs}};
+    j["phases_s"] = {{"compile", d.phases.compile}, {"trace", d.phases.trace},         {"score", d.phases.score}, {"time", d.phases.time},
+                     {"summarise", d.phases.summarise}, {"write", d.phases.write}, {"runs", d.phases.runs}};
     j["calibration"] = "ao^p, p fitted on the other scenes (leave-one-out), least squares, each scene weighted equally";
     j["scenes"] = nlohmann::json::array();
     for (const scene_record& s : d.scenes)

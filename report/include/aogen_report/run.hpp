@@ -71,18 +71,31 @@
 
 namespace aogen_report {
 
+// The timing protocol on a CPU device (Mesa's lavapipe), unless one is asked for: one round
+// of one iteration of every chain (interleaved with its floors, as on a GPU), no warm-up.
+// The GPU protocol's warm-up exists because a GPU idles at a fraction of its working clock
+// (timing.hpp: 4.6× slow on an H200) and its 20 back-to-back iterations because one
+// iteration there is microseconds; a CPU device has no idle clock to bring up, its
+// timestamps are the CPU's own time running each chain, and one iteration of every chain
+// takes seconds: one interleaved sample per chain and scene, the report's figure its median
+// over the scenes. The GPU protocol cost lavapipe 300 of the default report's 881 s
+// (issue 49; BENCHMARKS.md).
+inline constexpr aogen::vulkan::timing_options cpu_timing{1, 1, 0.0, 0.0};
+
 struct report_settings {
     std::vector<aogen::scenes::scene> scenes;
     std::vector<aogen::variant> variants;
     int width = 0, height = 0;       // every scene's resolution; 0: each scene's own
-    int grid = 64;                   // reference rays per pixel: grid × grid
+    int grid = 32;                   // reference rays per pixel: grid × grid (aogen_report's --rays: why 32)
     // Frames averaged for the "after N frames" error (a static camera, a plain mean standing
     // in for TAA's history): frame 0 is the single-frame output.
     static constexpr aogen::int_range frames_range{1, 1024};
     int frames = 8;
-    // Per scene: 3 rounds of up to 20 iterations of every chain, as many as fit ~1 s of GPU
-    // work (a GPU runs 20, lavapipe 1), after a warm-up of at least 500 ms, until settled.
+    // Per scene on a GPU: 3 rounds of up to 20 iterations of every chain, as many as fit ~1 s
+    // of GPU work, after a warm-up of at least 500 ms, until settled. On a CPU device
+    // (lavapipe) cpu_timing above, unless timing_given.
     aogen::vulkan::timing_options timing{3, 20, 500.0, 1000.0};
+    bool timing_given = false;       // `timing` was asked for (--rounds, ...): kept on a CPU device too
     bool fetch_floor = true;         // time each variant's fetch floor beside it
     bool feature_saving = true;      // run the point-cloud twins of SSAO variants
     size_t bound_bytes = size_t(2) << 30; // output images bound at once for timing, at most
@@ -189,11 +202,7 @@ inline run_record score(const compiled_variant& c, scene_bench& bench, int frame
         r.bent_normal_rgb = normal_bytes(out.full_bent_normal);
     }
     std::vector<double> sum(out.full.begin(), out.full.end());
-    for (int f = 1; f < frames; ++f) {
-        settings.frame = uint32_t(f);
-        const bench_run next = bench.run(*c.shipped, settings);
-        for (size_t i = 0; i < sum.size(); ++i) sum[i] += next.full[i];
-    }
+    if (frames > 1) bench.add_frames(*c.shipped, settings, 1, uint32_t(frames - 1), sum); // bound once, frame after frame
     std::vector<float> mean(sum.size());
     for (size_t i = 0; i < sum.size(); ++i) mean[i] = float(sum[i] / frames);
     r.accumulated = compare(mean, bench.truth().ao, bench.truth().valid);
@@ -348,7 +357,7 @@ inline void time_scene(aogen::vulkan::context& ctx, const report_settings& setti
     size_t group_bytes = 0;
     const auto flush = [&] {
         if (group.empty()) return;
-        time_group(ctx, group, settings.timing, scene, clocks, scene_clocks);
+        time_group(ctx, group, out.timing, scene, clocks, scene_clocks);
         group.clear(), group_bytes = 0;
     };
     // A floor binds the bytes of its variant's plan (the same blocks: floor_of).
@@ -403,10 +412,12 @@ inline report_data run_report(const report_settings& settings)
     using clock = std::chrono::steady_clock;
     detail::require_scoreable(settings);
     report_data out;
-    out.grid = settings.grid, out.frames = settings.frames, out.timing = settings.timing, out.fetch_floor = settings.fetch_floor;
+    out.grid = settings.grid, out.frames = settings.frames, out.fetch_floor = settings.fetch_floor;
     // Then: a missing device fails before any compiling or tracing.
     aogen::vulkan::context ctx(settings.device);
     out.device = ctx.device_name();
+    out.cpu_device = ctx.cpu();
+    out.timing = ctx.cpu() && !settings.timing_given ? cpu_timing : settings.timing;
     clock_monitor clocks(ctx.cpu() ? "" : ctx.device_name());
     out.max_sm_mhz = clocks.max_mhz();
     const std::vector<int> twin_of = detail::add_records(settings, out);
@@ -438,13 +449,18 @@ inline report_data run_report(const report_settings& settings)
         out.phases.score += detail::seconds_since(score_start);
 
         const auto time_start = clock::now();
-        settings.progress(tag + ": timing (" + std::to_string(settings.timing.rounds) + " rounds of up to " + std::to_string(settings.timing.iterations) +
-                          " iterations per chain, " + aogen::format_number(settings.timing.warmup_ms) + " ms warm-up)");
+        settings.progress(tag + ": timing (" + std::to_string(out.timing.rounds) + (out.timing.rounds == 1 ? " round" : " rounds") + " of up to " +
+                          std::to_string(out.timing.iterations) + (out.timing.iterations == 1 ? " iteration" : " iterations") + " per chain, " +
+                          aogen::format_number(out.timing.warmup_ms) + " ms warm-up" + (out.cpu_device ? ", a CPU device" : "") + ")");
         detail::time_scene(ctx, settings, bench, out, compiled, twin_of, clocks, all_clocks);
         out.phases.time += detail::seconds_since(time_start);
 
+        const auto summarise_start = clock::now();
         detail::summarise_all(out, twin_of);
+        out.phases.summarise += detail::seconds_since(summarise_start);
+        const auto write_start = clock::now();
         settings.scene_done(out);
+        out.phases.write += detail::seconds_since(write_start);
     }
     return out;
 }

@@ -159,6 +159,25 @@ public:
         return r;
     }
 
+    // Frames `first` .. `first + count - 1` of chain `c` with settings `s` (their frame
+    // index: temporal.hpp), each upsampled to the screen as run() does and added into `sum`
+    // (a screen's worth). The chain is bound once; each frame after the first writes only its
+    // uniform bytes anew (bound_chain::set_uniforms), as a frame loop does.
+    void add_frames(const aogen::vulkan::chain& c, aogen::vulkan::chain_settings s, uint32_t first, uint32_t count, std::vector<double>& sum)
+    {
+        const aogen::codegen::plan& p = c.plan();
+        const aogen::variant& v = p.variant();
+        s.frame = first;
+        aogen::vulkan::bound_chain bound(ctx_, c.passes(), gpu(v), p.inputs(s, width(), height()), c.counter());
+        for (uint32_t f = first; f < first + count; ++f) {
+            if (f != first) s.frame = f, bound.set_uniforms(p.inputs(s, width(), height()));
+            const aogen::vulkan::chain_result out = bound.run_once();
+            const std::vector<float> full = upsample(out.ao, out.width, out.height, aogen::output_scale(v), width(), height());
+            if (full.size() != sum.size()) aogen::fail("scene bench frames", "a sum of " + std::to_string(sum.size()) + " pixels", "valid: the screen's");
+            for (size_t i = 0; i < sum.size(); ++i) sum[i] += full[i];
+        }
+    }
+
     // View-space directions (3 floats each) turned into world space by the inverse of
     // world_to_view's rotation (its transpose); zero stays zero.
     static std::vector<float> view_to_world(std::vector<float> n, const aogen::mat4& world_to_view)
