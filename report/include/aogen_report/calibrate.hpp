@@ -137,13 +137,18 @@ inline std::vector<double> leave_one_out_powers(const std::vector<calibration_sc
     return p;
 }
 
-// ao^p per pixel (clamped to [0, 1] first); non-finite values stay as they are, so the
-// metrics still count them.
+// a^p (a clamped to [0, 1] first); a non-finite value stays as it is, so the metrics still
+// count it.
+inline float apply_power(float a, double p)
+{
+    return std::isfinite(a) ? float(std::pow(std::fmin(std::fmax(double(a), 0.0), 1.0), p)) : a;
+}
+
+// ao^p per pixel (apply_power of each).
 inline std::vector<float> apply_power(const std::vector<float>& ao, double p)
 {
     std::vector<float> out(ao.size());
-    for (size_t i = 0; i < ao.size(); ++i)
-        out[i] = std::isfinite(ao[i]) ? float(std::pow(std::fmin(std::fmax(double(ao[i]), 0.0), 1.0), p)) : ao[i];
+    for (size_t i = 0; i < ao.size(); ++i) out[i] = apply_power(ao[i], p);
     return out;
 }
 

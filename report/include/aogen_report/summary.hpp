@@ -42,7 +42,7 @@ inline double median(std::vector<double> v)
 inline std::vector<float> powered_full(const ao_readback& ao, double p, int W, int H)
 {
     float level[256];
-    for (int k = 0; k < 256; ++k) level[k] = apply_power({float(k) / 255.0f}, p)[0];
+    for (int k = 0; k < 256; ++k) level[k] = apply_power(float(k) / 255.0f, p);
     std::vector<float> powered(ao.unorm.size());
     for (size_t i = 0; i < powered.size(); ++i) powered[i] = level[ao.unorm[i]];
     return upsample(powered, ao.width, ao.height, ao.factor, W, H);
