@@ -7,10 +7,26 @@
 //   visible_geometry(scene, t)   how many pixels see geometry, and how far out it lies;
 //   require_scoreable(scene, t)  refuses a scene that shows nothing, or one too large for the
 //                                reference at its AO radius
-//   to_gbuffer<G>(g)             G{width, height, depth, normals}: aogen::vulkan::gbuffer
-//                                (this header does not include Vulkan).
+//   render_frame(scene, f)       frame f of a scene in motion (at_frame, scene.hpp), with its
+//                                motion vectors from frame f − 1 (gbuffer_options::previous).
+//   project_ndc(camera, p)       where a world point lands on a camera's screen, in NDC.
+//   to_gbuffer<G>(g)             G's width, height, depth, normals, and motion when G has
+//                                one: aogen::vulkan::gbuffer (this header does not include
+//                                Vulkan).
 //   stored_depth(d, format)      the value a shader reads back after the GPU stored d in a
 //                                depth buffer of that format.
+//
+// USAGE (a scene in motion, scene.hpp's camera.path and "motion")
+//   for (int f = 0; f < frame_count(s); ++f) {
+//       const gbuffer g = render_frame(s, f);          // g.motion: frame f − 1 → f, 0 at f = 0
+//       const auto in = to_gbuffer<aogen::vulkan::gbuffer>(g); // in.motion for a -histmv variant
+//   }
+//   or, with a tracer of your own: o.previous = &before (at_frame(s, f − 1)) and
+//   render_gbuffer(at_frame(s, f), tracer, o).
+//
+// ERRORS
+//   render_frame: a frame outside 0..frame_count(s) − 1, naming the scene and its frame
+//   count. render_gbuffer: a `previous` with other geometry than the scene's.
 //
 // CONVENTIONS
 //   * Rows are top row first; pixel (x, y) has uv = ((x + ½)/W, (y + ½)/H) and
@@ -35,6 +51,17 @@
 //     float t puts a point seen from t away up to ~2⁻²³·t off its surface (8·10⁻⁵ from 5 km),
 //     which the reference's ray offset would otherwise have to grow with t to clear; the
 //     refined point lies on the surface its rays start from.
+//   * motion (gbuffer_options::motion, or previous set; else empty): RG32F, width × height × 2,
+//     the motion from frame f − 1 (o.previous, at_frame(s, f − 1)) to this frame f, in NDC
+//     units, current minus previous, y up: mv = ndc − ndc_previous, with ndc the pixel
+//     centre's (above) and ndc_previous where the pixel's hit point stood at frame f − 1 — p
+//     minus its geometry's translation from frame f − 1 to f (a moving sphere's or box's;
+//     all else stands still) — projected, in double, by frame f − 1's camera (its view and
+//     projection). So ndc_previous = ndc − mv, and in uv (y down) uv_previous = uv −
+//     (mv.x/2, −mv.y/2). A still camera over still geometry writes 0. Background: 0. Frame 0
+//     (previous null): 0 everywhere. A point behind frame f − 1's perspective eye (w ≤ 0)
+//     had no place on screen: its mv is behind_previous_camera, (−4, −4), which puts
+//     ndc_previous (ndc + 4) off screen, where a history pass finds nothing to reuse.
 #pragma once
 
 #include "scene.hpp"
@@ -43,6 +70,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace aogen::scenes {
@@ -55,14 +85,28 @@ struct gbuffer {
     std::vector<double> position; // width × height × 3, world space, NaN on background
     std::vector<uint8_t> hit;     // width × height, 1 where a ray hit geometry
     std::vector<int> geometry;    // width × height, geometry id or −1
+    std::vector<float> motion;    // width × height × 2, NDC, current − previous, y up; empty unless asked for
 };
 
-// Converts to a type with aggregate layout {width, height, depth, normals}, such as
-// aogen::vulkan::gbuffer.
+namespace detail {
+
+template <class G, class = void>
+struct has_motion : std::false_type {};
+template <class G>
+struct has_motion<G, std::void_t<decltype(std::declval<G&>().motion)>> : std::true_type {};
+
+} // namespace detail
+
+// Converts to a type with members width, height, depth and normals, such as
+// aogen::vulkan::gbuffer, copying the motion vectors too when it has a member `motion`;
+// its other members (an albedo) are left as G{} has them.
 template <class G>
 G to_gbuffer(const gbuffer& g)
 {
-    return G{g.width, g.height, g.depth, g.normals};
+    G out{};
+    out.width = g.width, out.height = g.height, out.depth = g.depth, out.normals = g.normals;
+    if constexpr (detail::has_motion<G>::value) out.motion = g.motion;
+    return out;
 }
 
 // Vulkan's float → UNORM conversion, then UNORM → float, as the shader sees it. d·(2ⁿ − 1) is
@@ -80,7 +124,40 @@ struct gbuffer_options {
     normal_space normals = normal_space::world;    // used when use_scene_normals is false
     bool face_camera = true;                       // flip normals toward the ray (the reference's need);
                                                    // false follows scene.renderer.normals_face_camera
+    bool motion = false;                           // write gbuffer::motion (all 0 without `previous`)
+    const scene* previous = nullptr;               // the scene at frame f − 1 (at_frame), the rendered one
+                                                   // at frame f: motion vectors from it (implies motion)
 };
+
+// A point in normalised device coordinates: x right, y up, the screen's edges at ±1.
+struct ndc_point {
+    double x = 0, y = 0;
+};
+
+// The motion vector of a point that stood behind frame f − 1's eye (CONVENTIONS).
+inline constexpr ndc_point behind_previous_camera{-4, -4};
+
+// Pixel (x, y)'s centre in NDC (CONVENTIONS).
+inline ndc_point pixel_ndc(const camera& c, int x, int y)
+{
+    return {2.0 * (x + 0.5) / c.width - 1.0, 1.0 - 2.0 * (y + 0.5) / c.height};
+}
+
+// Where world point p lands on camera c's screen, in double: its view-space position
+// projected (perspective: divided by its distance along the view, w = −z). None for a
+// point on or behind a perspective camera's eye plane (w ≤ 0).
+inline std::optional<ndc_point> project_ndc(const camera& c, dvec3 p)
+{
+    dvec3 right, up, back;
+    c.basis(right, up, back);
+    const dvec3 o = p - c.eye;
+    const double x = truth::dot(o, right), y = truth::dot(o, up), w = -truth::dot(o, back);
+    if (c.projection == projection_kind::orthographic)
+        return ndc_point{2 * (x - c.left) / (double(c.right) - c.left) - 1, 2 * (y - c.bottom) / (double(c.top) - c.bottom) - 1};
+    if (!(w > 0)) return std::nullopt;
+    const double tan_y = c.tan_half_fov_y, tan_x = tan_y * (double(c.width) / c.height);
+    return ndc_point{x / (w * tan_x), y / (w * tan_y)};
+}
 
 // The camera ray through pixel (x, y)'s centre: world origin and direction, and the same
 // in view space (dir_v.z = −1, so the hit's t is its view distance).
@@ -103,8 +180,7 @@ public:
 
     primary_ray at(int x, int y) const
     {
-        const double ndc_x = 2.0 * (x + 0.5) / c_.width - 1.0;
-        const double ndc_y = 1.0 - 2.0 * (y + 0.5) / c_.height;
+        const auto [ndc_x, ndc_y] = pixel_ndc(c_, x, y);
         primary_ray r;
         if (c_.projection == projection_kind::perspective) {
             r.dir_v = {ndc_x * aspect_ * c_.tan_half_fov_y, ndc_y * c_.tan_half_fov_y, -1};
@@ -128,6 +204,40 @@ private:
     double tfar_;
 };
 
+namespace detail {
+
+// Where geometry `id` (scene::build order) stands: a box's lower corner, a sphere's centre,
+// the origin for everything else (which never moves).
+inline dvec3 placement(const scene& s, int id)
+{
+    const size_t i = size_t(id), boxes = s.planes.size(), spheres = boxes + s.boxes.size();
+    if (i >= boxes && i < spheres) return s.boxes[i - boxes].lo;
+    if (i >= spheres && i < spheres + s.spheres.size()) return s.spheres[i - spheres].centre;
+    return {};
+}
+
+// `previous` must be the same scene at another frame: the same geometry, id for id.
+inline void require_same_geometry(const scene& s, const scene& previous)
+{
+    if (s.planes.size() != previous.planes.size() || s.boxes.size() != previous.boxes.size() ||
+        s.spheres.size() != previous.spheres.size() || s.quads.size() != previous.quads.size() ||
+        s.meshes.size() != previous.meshes.size() || s.point_sets.size() != previous.point_sets.size())
+        fail(s.source + ": gbuffer_options.previous", previous.source + " has other geometry",
+             "valid: the same scene at frame f − 1, at_frame(s, f − 1)");
+}
+
+// Pixel i's motion vector from `previous` (CONVENTIONS): its hit point p on geometry `id`,
+// moved back by that geometry's translation since `previous`, seen by previous's camera.
+inline void write_motion(gbuffer& g, size_t i, ndc_point now, dvec3 p, int id, const scene& s, const scene& previous)
+{
+    const dvec3 was = p - (placement(s, id) - placement(previous, id));
+    const std::optional<ndc_point> then = project_ndc(previous.camera, was);
+    const ndc_point mv = then ? ndc_point{now.x - then->x, now.y - then->y} : behind_previous_camera;
+    g.motion[2 * i] = float(mv.x), g.motion[2 * i + 1] = float(mv.y);
+}
+
+} // namespace detail
+
 // Ray-casts the G-buffer of `s` into an already built tracer `t` (make_tracer(s)).
 inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuffer_options& o = {})
 {
@@ -142,6 +252,8 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
     g.position.assign(n * 3, std::numeric_limits<double>::quiet_NaN());
     g.hit.assign(n, 0);
     g.geometry.assign(n, -1);
+    if (o.motion || o.previous) g.motion.assign(n * 2, 0.0f);
+    if (o.previous) detail::require_same_geometry(s, *o.previous);
 
     const primary_rays rays(c);
     const mat4 proj = c.projection_matrix();
@@ -157,6 +269,7 @@ inline gbuffer render_gbuffer(const scene& s, const truth::scene& t, const gbuff
             g.position[3 * i] = h.position.x, g.position[3 * i + 1] = h.position.y, g.position[3 * i + 2] = h.position.z;
             g.hit[i] = 1;
             g.geometry[i] = int(h.geometry);
+            if (o.previous) detail::write_motion(g, i, pixel_ndc(c, x, y), h.position, int(h.geometry), s, *o.previous);
             if (g.normals_space != normal_space::none) {
                 dvec3 nw = truth::normalize(h.normal);
                 const bool flip = o.face_camera || s.renderer.normals_face_camera;
@@ -237,6 +350,17 @@ inline void require_scoreable(const scene& s, const truth::scene& t)
 inline gbuffer render_gbuffer(const scene& s, const gbuffer_options& o = {})
 {
     return render_gbuffer(s, *make_tracer(s), o);
+}
+
+// Frame f of `s` (at_frame), its tracer built, with motion vectors from frame f − 1 (all 0
+// at frame 0). `o.motion` and `o.previous` are set here.
+inline gbuffer render_frame(const scene& s, int f, gbuffer_options o = {})
+{
+    const scene now = at_frame(s, f);
+    const std::optional<scene> before = f > 0 ? std::optional<scene>(at_frame(s, f - 1)) : std::nullopt;
+    o.motion = true;
+    o.previous = before ? &*before : nullptr;
+    return render_gbuffer(now, *make_tracer(now), o);
 }
 
 } // namespace aogen::scenes

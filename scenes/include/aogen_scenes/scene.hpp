@@ -5,7 +5,9 @@
 //   scene                        analytic primitives (planes, boxes, spheres, quads), triangle
 //                                meshes (mesh.hpp) and point clouds drawn as splats
 //                                (points.hpp) in world space, a camera, the AO radius R and
-//                                the renderer's inputs.
+//                                the renderer's inputs; and its motion over frames: a camera
+//                                path (camera_path) and spheres and boxes that move
+//                                (geometry_motion).
 //   make_tracer(scene)           the scene's tracer (truth::scene), built: its origin is the
 //                                camera's eye, so Embree's float coordinates are camera-relative
 //                                (aogen_truth/tracer.hpp, HOW) and stay precise however far the
@@ -17,8 +19,16 @@
 //   camera::world_to_view()      look-at from eye/target/up (right-handed, looking down −z).
 //   camera::projection()         aogen::perspective()/orthographic() for the camera's depth
 //                                convention (aogen/math.hpp).
+//   frame_count(scene)           how many frames the scene has: 1 without a camera path,
+//                                path.frames with one.
+//   at_frame(scene, f)           the scene at frame f: the camera on its path and every moving
+//                                sphere and box translated by f × its translate_per_frame; a
+//                                still scene (no path, no motion) whose source names the frame.
+//                                Frame 0 is the scene as given.
+//   camera_at(camera, path, f)   the camera alone at frame f of a path starting at `camera`.
 //   builtin_scene(name)          the closed forms of docs/design.md § Ground truth and a few more (crease,
-//                                groove, wall, sphere_on_plane, room, stairs, plank, far_floor),
+//                                groove, wall, sphere_on_plane, room, stairs, plank, far_floor,
+//                                rolling_sphere),
 //                                meshes from assimp-testmodels (engine, teapots, terrain; atat,
 //                                dwarf, spider close and _far on a floor) and seed 004's point
 //                                cloud (point_cloud); builtin_scene_names().
@@ -32,8 +42,13 @@
 //     "geometry": [                                              (required, ≥ 1 entry)
 //       {"type": "plane",  "point": [x,y,z], "normal": [x,y,z], "half_extent": 1e4},
 //                                                                 (normal not zero; half_extent > 0)
-//       {"type": "box",    "min": [x,y,z], "max": [x,y,z]},       (axis-aligned, min < max)
-//       {"type": "sphere", "centre": [x,y,z], "radius": r},       (r > 0)
+//       {"type": "box",    "min": [x,y,z], "max": [x,y,z],        (axis-aligned, min < max)
+//                          "motion": {...}},                      (below)
+//       {"type": "sphere", "centre": [x,y,z], "radius": r,        (r > 0)
+//                          "motion": {"translate_per_frame": [x,y,z]}},
+//                                  (required in motion: at frame f the sphere or box is moved
+//                                   by f × translate_per_frame; only spheres and boxes move,
+//                                   and only in a scene with a camera path, which gives the frames)
 //       {"type": "quad",   "corner": [x,y,z], "e1": [x,y,z], "e2": [x,y,z]},
 //                                                                 (e1, e2 not parallel)
 //       {"type": "mesh",   "file": "model.glb",                   (required; relative to the
@@ -49,7 +64,22 @@
 //       "near": 0.1, "far": 100,                                 (near > 0 for perspective)
 //       "depth": "standard" | "reversed" | "reversed_infinite",  (default standard)
 //       "width": 160, "height": 90,                              (1..16384)
-//       "eye": [x,y,z], "target": [x,y,z], "up": [x,y,z]
+//       "eye": [x,y,z], "target": [x,y,z], "up": [x,y,z],
+//       "path": {"frames": F,                                    (required: 2..10000)
+//                and exactly one of
+//                "keyframes": [{"eye": [x,y,z], "target": [x,y,z]}, ...],
+//                                  (2..F keyframes, both keys required; evenly spaced in frames:
+//                                   keyframe k at frame k·(F − 1)/(K − 1), eye and target linear
+//                                   between them; keyframe 0 is frame 0's camera, so the camera
+//                                   itself gives no eye or target)
+//                "orbit": {"degrees": a},  (−3600..3600: the eye turns about the axis `up`
+//                                   through the target, a degrees by the last frame, right-handed:
+//                                   counter-clockwise seen from above; distance kept)
+//                "dolly": {"distance": d}, (eye and target move d along the view direction)
+//                "strafe": {"distance": d}}(eye and target move d along the camera's right)
+//                                  (d: ±1e15, world units by the last frame; each of these moves
+//                                   by f/(F − 1) of it at frame f; frame 0 is the camera above.
+//                                   A still camera over F frames: "strafe": {"distance": 0})
 //     },
 //     "ao_radius": 1.0,                                           (world units, > 0)
 //     "renderer": {"normals": "world" | "view" | "none", "point_cloud": false,
@@ -64,6 +94,7 @@
 //   follow the camera; a point-cloud renderer has no normals ("normals": "none").
 //   Errors name the file and the field, e.g.
 //     scene.json.camera.depth: "reverse" is not a depth convention (valid: standard, reversed, reversed_infinite)
+//     scene.json.camera.path.frames: 1 is out of range (valid: an integer 2..10000)
 #pragma once
 
 #include "mesh.hpp"
@@ -144,6 +175,34 @@ struct renderer_inputs {
     depth_format depth_buffer = depth_format::d32_sfloat; // the G-buffer's depth is stored as this
 };
 
+// --- motion over frames -------------------------------------------------------------
+// A scene without a path has one frame; with one, path.frames. Frame 0 is always the scene
+// as given (at_frame below).
+
+inline constexpr int max_frames = 10000;
+inline constexpr double max_orbit_degrees = 3600; // ten turns
+
+enum class path_kind { none, keyframes, orbit, dolly, strafe };
+
+struct camera_keyframe { dvec3 eye, target; };
+
+// How the camera moves from frame 0 (the scene's camera) to frame `frames` − 1.
+struct camera_path {
+    path_kind kind = path_kind::none;       // none: a still scene of one frame
+    int frames = 1;                         // 2..max_frames with a path
+    std::vector<camera_keyframe> keyframes; // keyframes: 2..frames, the first the camera's eye and target
+    double amount = 0;                      // by the last frame: orbit, degrees; dolly, strafe, world units
+};
+
+enum class moving_kind { box, sphere };
+
+// A box or a sphere that moves: at frame f translated by f × translate_per_frame.
+struct geometry_motion {
+    moving_kind kind = moving_kind::sphere;
+    size_t index = 0; // into scene::boxes or scene::spheres
+    dvec3 translate_per_frame;
+};
+
 struct scene {
     std::string name;
     std::string source;             // where it came from, for messages: its file, or "built-in scene 'crease'"
@@ -156,6 +215,8 @@ struct scene {
     aogen::scenes::camera camera;
     double ao_radius = 1.0;
     renderer_inputs renderer;
+    camera_path path;                     // the camera over the frames (JSON camera.path)
+    std::vector<geometry_motion> motions; // the spheres and boxes that move (JSON "motion")
 
     // Adds the geometry to a tracer scene (and commits it). Geometry ids follow the order
     // planes, boxes, spheres, quads, meshes, point sets (one id per mesh and per point set).
@@ -200,7 +261,144 @@ inline std::unique_ptr<truth::scene> make_tracer(const scene& s)
     return make_tracer_at(s, s.camera.eye);
 }
 
+// --- frames -------------------------------------------------------------------------
+
+inline int frame_count(const scene& s) { return s.path.kind == path_kind::none ? 1 : s.path.frames; }
+
+namespace detail {
+
+// (1 − w)·a + w·b: exactly a at w = 0 and exactly b at w = 1.
+inline dvec3 mix(dvec3 a, dvec3 b, double w) { return (1 - w) * a + w * b; }
+
+// v turned by `degrees` about the unit axis k, right-handed (Rodrigues' formula).
+inline dvec3 rotate(dvec3 v, dvec3 k, double degrees)
+{
+    const random::cos_sin cs = random::cos_sin_turns(degrees / 360);
+    return cs.c * v + cs.s * truth::cross(k, v) + ((1 - cs.c) * truth::dot(k, v)) * k;
+}
+
+// The camera of frame f of a keyframe path: keyframe k at frame k·(F − 1)/(K − 1).
+inline camera keyframe_camera(camera c, const camera_path& p, int f)
+{
+    const size_t last = p.keyframes.size() - 1;
+    const double u = double(size_t(f) * last) / (p.frames - 1); // exact at every keyframe
+    const size_t i = std::min(size_t(u), last - 1);
+    c.eye = mix(p.keyframes[i].eye, p.keyframes[i + 1].eye, u - double(i));
+    c.target = mix(p.keyframes[i].target, p.keyframes[i + 1].target, u - double(i));
+    return c;
+}
+
+} // namespace detail
+
+// The camera at frame f (0..p.frames − 1) of path `p` whose frame 0 is `c`.
+inline camera camera_at(camera c, const camera_path& p, int f)
+{
+    if (p.kind == path_kind::none || f == 0) return c;
+    if (p.kind == path_kind::keyframes) return detail::keyframe_camera(c, p, f);
+    const double share = (double(f) / (p.frames - 1)) * p.amount; // of the orbit's degrees or the distance
+    dvec3 right, up, back;
+    c.basis(right, up, back);
+    if (p.kind == path_kind::orbit) {
+        c.eye = c.target + detail::rotate(c.eye - c.target, truth::normalize(c.up), share);
+        return c;
+    }
+    const dvec3 move = share * (p.kind == path_kind::dolly ? -1.0 * back : right);
+    c.eye = c.eye + move, c.target = c.target + move;
+    return c;
+}
+
+// `s` at frame f (0..frame_count(s) − 1): the camera placed on its path and every moving
+// sphere and box moved by f × its translate_per_frame. A still scene (no path, no motion):
+// frame 0 of a scene with one frame is `s` itself.
+inline scene at_frame(const scene& s, int f)
+{
+    const int frames = frame_count(s);
+    if (f < 0 || f >= frames)
+        fail(s.source + ": frame", std::to_string(f) + " is out of range",
+             "valid: 0.." + std::to_string(frames - 1) + ": the scene has " + std::to_string(frames) + (frames == 1 ? " frame" : " frames"));
+    if (frames == 1) return s;
+    scene out = s;
+    out.source = s.source + " at frame " + std::to_string(f);
+    out.camera = camera_at(s.camera, s.path, f);
+    for (const geometry_motion& m : s.motions) {
+        const dvec3 d = double(f) * m.translate_per_frame;
+        if (m.kind == moving_kind::sphere) {
+            out.spheres[m.index].centre = out.spheres[m.index].centre + d;
+        } else {
+            box& b = out.boxes[m.index];
+            b.lo = b.lo + d, b.hi = b.hi + d;
+        }
+    }
+    out.path = {};
+    out.motions.clear();
+    return out;
+}
+
 // --- validation --------------------------------------------------------------------
+
+// The largest coordinate or length a scene file may give (see JSON FORMAT).
+inline constexpr double max_coordinate = 1e15;
+
+namespace detail {
+
+// Whether eye, target and up give a view basis (eye != target, up not along the view).
+inline bool has_view(const camera& c)
+{
+    dvec3 s, u, b;
+    c.basis(s, u, b);
+    return std::isfinite(s.x + s.y + s.z + u.x + u.y + u.z);
+}
+
+inline bool same(dvec3 a, dvec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// `what` (a moving sphere's or box's motion) needs frames, which only a camera path gives.
+inline void require_frames_for_motion(const std::string& what, const scene& s)
+{
+    if (frame_count(s) == 1)
+        fail(what, "moves, but the scene has one frame: there is no camera.path",
+             "valid: a camera.path, which gives the frames; \"strafe\": {\"distance\": 0} keeps the camera still");
+}
+
+inline void validate_path(const scene& s, const std::string& where)
+{
+    const camera_path& p = s.path;
+    if (p.kind == path_kind::none) return;
+    const std::string what = where + ": camera.path";
+    require_range(what + ".frames", p.frames, 2, max_frames);
+    if (p.kind == path_kind::keyframes) {
+        require_range(what + ".keyframes count", int(p.keyframes.size()), 2, p.frames);
+        if (!same(p.keyframes[0].eye, s.camera.eye) || !same(p.keyframes[0].target, s.camera.target))
+            fail(what + ".keyframes[0]", "is not the camera's eye and target", "valid: keyframe 0 is frame 0's camera");
+    } else if (p.kind == path_kind::orbit) {
+        require_finite_range(what + ".orbit.degrees", p.amount, -max_orbit_degrees, max_orbit_degrees);
+    } else {
+        require_finite_range(what + (p.kind == path_kind::dolly ? ".dolly" : ".strafe") + ".distance", p.amount, -max_coordinate, max_coordinate);
+    }
+    for (int f = 1; f < p.frames; ++f)
+        if (!has_view(camera_at(s.camera, p, f)))
+            fail(what, "frame " + std::to_string(f) + "'s eye, target and up do not define a view (eye == target, or up parallel to the view)",
+                 "valid: a path whose eye stays off its target and off the up axis through it");
+}
+
+inline void validate_motions(const scene& s, const std::string& where)
+{
+    for (size_t i = 0; i < s.motions.size(); ++i) {
+        const geometry_motion& m = s.motions[i];
+        const bool sphere = m.kind == moving_kind::sphere;
+        const std::string what = where + ": " + (sphere ? "sphere " : "box ") + std::to_string(m.index) + " motion";
+        const size_t count = sphere ? s.spheres.size() : s.boxes.size();
+        if (m.index >= count)
+            fail(what, std::string("names a ") + (sphere ? "sphere" : "box") + " the scene does not have",
+                 "valid: index < " + std::to_string(count));
+        for (size_t j = 0; j < i; ++j)
+            if (s.motions[j].kind == m.kind && s.motions[j].index == m.index) fail(what, "is given twice", "valid: one motion per sphere or box");
+        for (double c : {m.translate_per_frame.x, m.translate_per_frame.y, m.translate_per_frame.z})
+            require_finite_range(what + ".translate_per_frame", c, -max_coordinate, max_coordinate);
+        require_frames_for_motion(what, s);
+    }
+}
+
+} // namespace detail
 
 inline void validate(const scene& s, const std::string& where)
 {
@@ -219,9 +417,7 @@ inline void validate(const scene& s, const std::string& where)
     }
     if (!(c.far > c.near) || !std::isfinite(c.far))
         fail(where + ": camera.far", format_number(c.far) + " is not a finite value > near", "valid: near < far < inf");
-    dvec3 sb, ub, bb;
-    c.basis(sb, ub, bb);
-    if (!std::isfinite(sb.x + sb.y + sb.z + ub.x + ub.y + ub.z))
+    if (!detail::has_view(c))
         fail(where + ": camera.eye/target/up", "do not define a view (eye == target, or up parallel to the view)",
              "valid: eye != target, up not parallel to target − eye");
     if (!(s.ao_radius > 0) || !std::isfinite(s.ao_radius))
@@ -241,12 +437,11 @@ inline void validate(const scene& s, const std::string& where)
         if (!(p.splat_size > 0) || !std::isfinite(p.splat_size))
             fail(what + " splat_size", format_number(p.splat_size) + " is not a positive number", "valid: > 0");
     }
+    detail::validate_path(s, where);
+    detail::validate_motions(s, where);
 }
 
 // --- JSON ---------------------------------------------------------------------------
-
-// The largest coordinate or length a scene file may give (see JSON FORMAT).
-inline constexpr double max_coordinate = 1e15;
 
 namespace detail {
 
@@ -331,6 +526,73 @@ inline points read_points(const tools::json_reader& g)
     return p;
 }
 
+// {"motion": {"translate_per_frame": [x, y, z]}} of a sphere or box.
+inline dvec3 read_motion(const tools::json_reader& g)
+{
+    const tools::json_reader m = g.field("motion");
+    m.only_keys({"translate_per_frame"});
+    return read_vec3(m, "translate_per_frame");
+}
+
+// Planes, quads, meshes and points stand still: a "motion" on one is refused by name.
+inline void refuse_motion(const tools::json_reader& g, const std::string& type)
+{
+    if (g.has("motion") && (type == "plane" || type == "quad" || type == "mesh" || type == "points"))
+        fail(g.path() + ".motion", "is for spheres and boxes, not a " + type,
+             "valid: motion on a sphere or a box; planes, quads, meshes and points stand still");
+}
+
+// camera.path's keyframes: 2..frames of them, each {"eye", "target"}.
+inline std::vector<camera_keyframe> read_keyframes(const tools::json_reader& p, int frames)
+{
+    const tools::json_reader k = p.array("keyframes");
+    if (k.size() < 2 || k.size() > size_t(frames))
+        fail(k.path(), "has " + std::to_string(k.size()) + (k.size() == 1 ? " keyframe" : " keyframes"),
+             "valid: 2.." + std::to_string(frames) + " keyframes, at most one per frame");
+    std::vector<camera_keyframe> out;
+    for (size_t i = 0; i < k.size(); ++i) {
+        const tools::json_reader f = k.at(i);
+        f.only_keys({"eye", "target"});
+        out.push_back({read_vec3(f, "eye"), read_vec3(f, "target")});
+    }
+    return out;
+}
+
+// {"degrees": a} of an orbit, {"distance": d} of a dolly or strafe.
+inline double read_path_amount(const tools::json_reader& p, const char* kind)
+{
+    const tools::json_reader k = p.field(kind);
+    const bool orbit = std::string(kind) == "orbit";
+    const char* key = orbit ? "degrees" : "distance";
+    k.only_keys({key});
+    const double limit = orbit ? max_orbit_degrees : max_coordinate;
+    const double x = k.number(key);
+    require_finite_range(k.path() + "." + key, x, -limit, limit);
+    return x;
+}
+
+// camera.path: "frames" and exactly one of keyframes, orbit, dolly, strafe.
+inline camera_path read_path(const tools::json_reader& c)
+{
+    const tools::json_reader p = c.field("path");
+    p.only_keys({"frames", "keyframes", "orbit", "dolly", "strafe"});
+    camera_path out;
+    out.frames = int(p.unsigned_integer("frames", 2, max_frames));
+    const std::pair<const char*, path_kind> kinds[] = {
+        {"keyframes", path_kind::keyframes}, {"orbit", path_kind::orbit}, {"dolly", path_kind::dolly}, {"strafe", path_kind::strafe}};
+    std::string given;
+    for (const auto& [key, kind] : kinds)
+        if (p.has(key)) {
+            if (!given.empty())
+                fail(p.path(), "has both " + given + " and " + key, "valid: exactly one of keyframes, orbit, dolly, strafe");
+            given = key, out.kind = kind;
+        }
+    if (given.empty()) fail(p.path(), "has no kind of path", "valid: exactly one of keyframes, orbit, dolly, strafe");
+    if (out.kind == path_kind::keyframes) out.keyframes = read_keyframes(p, out.frames);
+    else out.amount = read_path_amount(p, given.c_str());
+    return out;
+}
+
 template <class E>
 E read_enum(const tools::json_reader& r, const char* key, std::initializer_list<std::pair<const char*, E>> values, const char* what)
 {
@@ -355,25 +617,29 @@ inline scene read_scene(const tools::json_reader& root, const std::string& sourc
     scene s;
     s.source = root.path();
 
+    std::string first_motion; // the first geometry entry's motion, if any: it needs a camera path
     const tools::json_reader geo = root.array("geometry");
     for (size_t i = 0; i < geo.size(); ++i) {
         const tools::json_reader g = geo.at(i);
         g.require_object();
         const std::string type = g.string("type");
+        detail::refuse_motion(g, type);
         if (type == "plane") {
             g.only_keys({"type", "point", "normal", "half_extent"});
             plane p{detail::read_vec3(g, "point"), detail::read_direction(g, "normal")};
             if (g.has("half_extent")) p.half_extent = detail::read_length(g, "half_extent");
             s.planes.push_back(p);
         } else if (type == "box") {
-            g.only_keys({"type", "min", "max"});
+            g.only_keys({"type", "min", "max", "motion"});
             const box b{detail::read_vec3(g, "min"), detail::read_vec3(g, "max")};
             if (!(b.lo.x < b.hi.x && b.lo.y < b.hi.y && b.lo.z < b.hi.z))
                 fail(g.path(), "min is not below max on every axis", "valid: min < max componentwise");
+            if (g.has("motion")) s.motions.push_back({moving_kind::box, s.boxes.size(), detail::read_motion(g)});
             s.boxes.push_back(b);
         } else if (type == "sphere") {
-            g.only_keys({"type", "centre", "radius"});
+            g.only_keys({"type", "centre", "radius", "motion"});
             s.spheres.push_back({detail::read_vec3(g, "centre"), detail::read_length(g, "radius")});
+            if (g.has("motion")) s.motions.push_back({moving_kind::sphere, s.spheres.size() - 1, detail::read_motion(g)});
         } else if (type == "quad") {
             g.only_keys({"type", "corner", "e1", "e2"});
             const quad q{detail::read_vec3(g, "corner"), detail::read_vec3(g, "e1"), detail::read_vec3(g, "e2")};
@@ -386,12 +652,13 @@ inline scene read_scene(const tools::json_reader& root, const std::string& sourc
         } else {
             fail(g.path() + ".type", quote(type) + " is not a geometry type", "valid: plane, box, sphere, quad, mesh, points");
         }
+        if (g.has("motion") && first_motion.empty()) first_motion = g.path() + ".motion";
     }
 
     if (root.has("camera")) {
         const tools::json_reader c = root.field("camera");
         c.only_keys({"projection", "tan_half_fov_y", "left", "right", "bottom", "top", "near", "far", "depth", "width",
-                     "height", "eye", "target", "up"});
+                     "height", "eye", "target", "up", "path"});
         camera& cam = s.camera;
         if (c.has("projection"))
             cam.projection = detail::read_enum<projection_kind>(
@@ -419,7 +686,16 @@ inline scene read_scene(const tools::json_reader& root, const std::string& sourc
         if (c.has("eye")) cam.eye = detail::read_vec3(c, "eye");
         if (c.has("target")) cam.target = detail::read_vec3(c, "target");
         if (c.has("up")) cam.up = detail::read_vec3(c, "up");
+        if (c.has("path")) s.path = detail::read_path(c);
+        if (s.path.kind == path_kind::keyframes) {
+            for (const char* k : {"eye", "target"})
+                if (c.has(k))
+                    fail(c.path() + "." + k, "is given by camera.path.keyframes[0] in a path of keyframes",
+                         "valid: leave eye and target out with keyframes; orbit, dolly and strafe start from them");
+            cam.eye = s.path.keyframes[0].eye, cam.target = s.path.keyframes[0].target;
+        }
     }
+    if (!first_motion.empty()) detail::require_frames_for_motion(first_motion, s);
     if (root.has("ao_radius")) s.ao_radius = detail::read_length(root, "ao_radius");
     if (root.has("renderer")) {
         const tools::json_reader r = root.field("renderer");
@@ -462,11 +738,13 @@ inline scene load_scene(const std::string& path) { return read_scene(tools::read
 // World z is up; the floor is z = 0. Default resolution 160×90, 60° vertical field of view.
 // The analytic scenes come first, then the meshes of assimp-testmodels (engine, teapots,
 // terrain: builtin_scene says to install the package when a model is missing), then the
-// point cloud.
+// point cloud. Frames: room strafes, stairs orbits, engine dollies and rolling_sphere's
+// sphere rolls while its camera strafes, 16 frames each; the rest are still (one frame).
+// Frame 0 of each is the scene as it was before paths existed.
 
 inline std::vector<std::string> builtin_scene_names()
 {
-    return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank", "far_floor",
+    return {"crease", "groove", "wall", "sphere_on_plane", "room", "stairs", "plank", "far_floor", "rolling_sphere",
             "engine", "teapots", "terrain", "atat", "atat_far", "dwarf", "dwarf_far", "spider", "spider_far", "point_cloud"};
 }
 
@@ -598,10 +876,12 @@ inline scene builtin_scene(const std::string& name)
         s.boxes = {{{-4.5, 3, 0}, {-2.5, 4.5, 1}}, {{1, 1, 0}, {2, 2, 2}}, {{-1, -1, 0}, {0.5, 0, 0.5}}};
         s.spheres = {{{3, 3.5, 0.6}, 0.6}};
         c.eye = {0, -7, 2.5}, c.target = {0, 1.5, 0.8};
+        s.path = {path_kind::strafe, 16, {}, 1.0}; // 1 m to the right (+x) over 16 frames
     } else if (name == "stairs") { // five steps of rise 0.2 and run 0.4 climbing along +y
         s.planes = {floor};
         for (int i = 0; i < 5; ++i) s.boxes.push_back({{-1.5, 0.4 * i, 0}, {1.5, 2.0, 0.2 * (i + 1)}});
         c.eye = {3.5, -3, 2.5}, c.target = {0, 1, 0.4};
+        s.path = {path_kind::orbit, 16, {}, 20.0}; // 20° about the vertical through the target over 16 frames
     } else if (name == "plank") { // a 2 cm plank 5 cm above the floor
         s.planes = {floor};
         s.boxes = {{{-1.5, -0.2, 0.05}, {1.5, 0.2, 0.07}}};
@@ -611,9 +891,20 @@ inline scene builtin_scene(const std::string& name)
         s.planes = {{{0, 0, 0}, {0, 0, 1}, 2000}}; // 2 km: within what an R = 1 reference traces reliably
         c.eye = {0, 0, 1.6}, c.target = {0, 40, 0.8};
         c.far = 5000;
+    } else if (name == "rolling_sphere") { // crease's floor and wall x = 0 and sphere_on_plane's unit sphere,
+                                           // 0.5 from the wall (half R), rolling along it (+y, left to right
+                                           // on screen) 0.2 a frame from y = −1.5 to 1.5 over 16 frames while
+                                           // the camera strafes 0.5 the same way
+        s.planes = {floor, {{0, 0, 0}, {1, 0, 0}}};
+        s.spheres = {{{1.5, -1.5, 1}, 1}};
+        s.motions = {{moving_kind::sphere, 0, {0, 0.2, 0}}};
+        c.eye = {6, -2, 3}, c.target = {1, 0, 0.8};
+        s.path = {path_kind::strafe, 16, {}, 0.5};
     } else if (name == "engine") { // glTF 2CylinderEngine: y-up millimetres → z-up metres (0.74 m long)
         detail::set_model(s, detail::builtin_model(name, "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", {0.001, 90, {}}),
                           true, 30, 0.9, 0.06);
+        const dvec3 view = c.target - c.eye; // dollies in by a fifth of the distance to the target over 16 frames
+        s.path = {path_kind::dolly, 16, {}, 0.2 * std::sqrt(truth::dot(view, view))};
     } else if (name == "teapots") { // Collada teapots, y-up → z-up (1.3 units across)
         detail::set_model(s, detail::builtin_model(name, "Collada/teapots.DAE", {1, 90, {}}), true, 30, 0.9, 0.08);
     } else if (name == "terrain") { // Terragen height field, metres → km (10 km square, 1.4 km relief, z up),
