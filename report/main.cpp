@@ -2,7 +2,7 @@
 //
 //     aogen_report [--scenes crease,room,my_scene.json] [--variants spec.json | NAME,NAME]
 //                  [--size 320x180] [--rays 1024] [--frames 8] [--rounds 3] [--iterations 20] [--budget-ms 1000] [--warmup-ms 500]
-//                  [--device NAME] [--out out/report]
+//                  [--motion-variants spec.json | NAME,NAME | none] [--device NAME] [--out out/report]
 //
 // Writes into --out: report.html (the whole report as one self-contained page: the plot,
 // a sortable, filterable table, every variant's images on every scene), report.md (the
@@ -130,9 +130,9 @@ void add_report(aogen::tools::file_set& set, const aogen_report::report_data& d,
 std::string where_the_time_went(const aogen_report::phase_times& p, double final_write, double total)
 {
     using aogen_report::detail::fixed;
-    const double named = p.compile + p.trace + p.score + p.time + p.summarise + p.write + final_write;
+    const double named = p.compile + p.trace + p.score + p.time + p.summarise + p.motion + p.write + final_write;
     return fixed(total, 1) + " s in all: compile " + fixed(p.compile, 1) + " s, trace " + fixed(p.trace, 1) + " s, score " + fixed(p.score, 1) +
-           " s, time " + fixed(p.time, 1) + " s, summaries " + fixed(p.summarise, 1) + " s, writing " + fixed(p.write + final_write, 1) +
+           " s, time " + fixed(p.time, 1) + " s, summaries " + fixed(p.summarise, 1) + " s, in motion " + fixed(p.motion, 1) + " s, writing " + fixed(p.write + final_write, 1) +
            " s (after each scene " + fixed(p.write, 1) + " s, the final set " + fixed(final_write, 1) + " s), the rest " + fixed(total - named, 1) +
            " s; " + std::to_string(p.runs) + " variant × scene runs";
 }
@@ -188,6 +188,7 @@ int main(int argc, char** argv)
     int frames = aogen_report::report_settings{}.frames;
     aogen::vulkan::timing_options timing = aogen_report::report_settings{}.timing;
     bool validation = false, no_saving = false, no_floor = false;
+    std::string motion_variants;
     app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)")
         ->check(aogen::tools::not_empty("scene names or files"));
     app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)")
@@ -210,6 +211,10 @@ int main(int argc, char** argv)
     app.add_flag("--validation", validation, "enable the Khronos validation layer");
     app.add_flag("--no-feature-saving", no_saving, "skip the point-cloud-fallback comparison");
     app.add_flag("--no-fetch-floor", no_floor, "do not time each variant's fetch and bandwidth floors");
+    app.add_option("--motion-variants", motion_variants,
+                   "the variants run in motion along every scene with a camera path: a spec .json or names, comma-separated, or none "
+                   "(default: the default variant and cheap GTAO chains, each with and without the history pass, and gtao-4x4-half-noblur)")
+        ->check(aogen::tools::not_empty("a spec file, variant names or none"));
     std::string suite, cases;
     bool check = false;
     app.add_option("--suite", suite, "run a suite instead of the error-against-time report: stability")
@@ -237,7 +242,7 @@ int main(int argc, char** argv)
     try {
         // Options that belong to the other mode are refused, not ignored.
         const std::vector<std::string> report_only{"--scenes", "--size", "--frames", "--rounds", "--iterations", "--budget-ms", "--warmup-ms",
-                                                   "--no-feature-saving", "--no-fetch-floor"};
+                                                   "--no-feature-saving", "--no-fetch-floor", "--motion-variants"};
         for (const std::string& o : report_only)
             if (!suite.empty() && app.count(o) > 0)
                 aogen::fail(o, "is an option of the error-against-time report, not of --suite " + suite, "valid: leave it out with --suite");
@@ -257,6 +262,7 @@ int main(int argc, char** argv)
         s.fetch_floor = !no_floor;
         s.scenes = load_scenes(scenes);
         s.variants = load_variants(variants);
+        if (app.count("--motion-variants")) s.motion_variants = motion_variants == "none" ? std::vector<aogen::variant>{} : load_variants(motion_variants);
         s.progress = progress;
         const std::filesystem::path folder(out);
         // Everything a run needs besides its own work, checked before it starts.

@@ -253,12 +253,31 @@ inline constexpr std::array<enum_name<multi_bounce_mode>, 3> multi_bounce_mode_n
     {multi_bounce_mode::gbuffer_albedo, "gbuffer"},
 }};
 
+// The history pass (history.glsl; docs/design.md § The history pass): whether the chain
+// keeps the AO of earlier frames -- the temporal filter UE5's, HDRP's and three.js's GTAO run
+// after their spatial one -- and how it finds where a pixel was a frame ago.
+enum class history_mode {
+    off,
+    // By the camera alone: this frame's and the previous frame's view and projection (the
+    // pass's uniforms) move a static surface's point to where it was (-hist).
+    camera,
+    // By the renderer's motion vectors (bindings.hpp's motion role, a full-resolution
+    // texture), which also follow objects that move; the camera still gives the depth the
+    // point had, for the disocclusion test (-histmv).
+    motion_vectors,
+};
+inline constexpr std::array<enum_name<history_mode>, 3> history_mode_names{{
+    {history_mode::off, "off"},
+    {history_mode::camera, "camera"},
+    {history_mode::motion_vectors, "motion_vectors"},
+}};
+
 static_assert(names::distinct(technique_names) && names::distinct(pipeline_stage_names) &&
               names::distinct(projection_kind_names) && names::distinct(depth_convention_names) &&
               names::distinct(normal_source_names) && names::distinct(ssao_output_names) &&
               names::distinct(ssao_range_check_names) && names::distinct(ssao_decisions_names) && names::distinct(blur_mode_names) &&
               names::distinct(bilateral_depth_names) && names::distinct(upsample_mode_names) &&
-              names::distinct(multi_bounce_mode_names));
+              names::distinct(multi_bounce_mode_names) && names::distinct(history_mode_names));
 
 // Enum -> canonical name. A value outside the enumeration throws aogen::error.
 inline const char* to_name(technique v) { return names::name_of(technique_names, v, "technique"); }
@@ -273,6 +292,7 @@ inline const char* to_name(blur_mode v) { return names::name_of(blur_mode_names,
 inline const char* to_name(bilateral_depth v) { return names::name_of(bilateral_depth_names, v, "bilateral depth"); }
 inline const char* to_name(upsample_mode v) { return names::name_of(upsample_mode_names, v, "upsample"); }
 inline const char* to_name(multi_bounce_mode v) { return names::name_of(multi_bounce_mode_names, v, "multi-bounce"); }
+inline const char* to_name(history_mode v) { return names::name_of(history_mode_names, v, "history"); }
 
 // Name -> enum. An unknown name throws aogen::error listing the valid names; `subject`
 // is what the message names (pass the option or JSON path the user wrote, e.g. "--blur").

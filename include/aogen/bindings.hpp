@@ -31,6 +31,9 @@
 //                    5 gbuffer_albedo                  5 output  6 raw  7 gbuffer_albedo
 //     prefilter      0 uniforms  1 depth  2 output    0 uniforms  1 depth  2 depth sampler
 //                                                      3 output
+//     history        the filter passes' 0..5, then     the filter passes' 0..7, then
+//                    6 history  7 history_output       8 history  9 history_output
+//                    8 motion                          10 motion
 //
 //   A number belongs to its role whether or not a given shader declares it: a reconstructed-
 //   normal variant has no binding 2 (vulkan), a fragment pass no output image, a shipped
@@ -62,8 +65,8 @@ inline constexpr std::array<enum_name<binding_model>, 2> binding_model_names{{
 }};
 static_assert(names::distinct(binding_model_names));
 
-enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw, depth_mips, gbuffer_albedo };
-inline constexpr std::array<enum_name<resource_role>, 9> resource_role_names{{
+enum class resource_role { uniforms, depth, normals, noise, ao_input, output, raw, depth_mips, gbuffer_albedo, history, history_output, motion };
+inline constexpr std::array<enum_name<resource_role>, 12> resource_role_names{{
     {resource_role::uniforms, "uniforms"},
     {resource_role::depth, "depth"},
     {resource_role::normals, "normals"},
@@ -73,21 +76,27 @@ inline constexpr std::array<enum_name<resource_role>, 9> resource_role_names{{
     {resource_role::raw, "raw"},
     {resource_role::depth_mips, "depth_mips"},
     {resource_role::gbuffer_albedo, "gbuffer_albedo"},
+    {resource_role::history, "history"},
+    {resource_role::history_output, "history_output"},
+    {resource_role::motion, "motion"},
 }};
 static_assert(names::distinct(resource_role_names));
 inline const char* to_name(resource_role r) { return names::name_of(resource_role_names, r, "resource role"); }
 
-// The AO pass, one of the passes that filter its image (blurs and the upsample), or the
-// prefilter that builds the depth MIP chain before it.
-enum class pass_family { ao, filter, prefilter };
-inline constexpr std::array<enum_name<pass_family>, 3> pass_family_names{{
+// The AO pass, one of the passes that filter its image (blurs and the upsample), the
+// prefilter that builds the depth MIP chain before it, or the history pass, a filter that
+// also reads and writes the history.
+enum class pass_family { ao, filter, prefilter, history };
+inline constexpr std::array<enum_name<pass_family>, 4> pass_family_names{{
     {pass_family::ao, "ao"},
     {pass_family::filter, "filter"},
     {pass_family::prefilter, "prefilter"},
+    {pass_family::history, "history"},
 }};
 inline pass_family family_of(pass_kind p)
 {
     if (p == pass_kind::ao) return pass_family::ao;
+    if (p == pass_kind::history) return pass_family::history;
     return p == pass_kind::prefilter ? pass_family::prefilter : pass_family::filter;
 }
 
@@ -101,6 +110,9 @@ inline std::vector<resource_role> pass_roles(pass_family f)
     using r = resource_role;
     if (f == pass_family::ao) return {r::uniforms, r::depth, r::normals, r::noise, r::output, r::raw, r::depth_mips, r::gbuffer_albedo};
     if (f == pass_family::prefilter) return {r::uniforms, r::depth, r::output};
+    // The history pass is a filter (the same numbers for the same roles), then its own three.
+    if (f == pass_family::history)
+        return {r::uniforms, r::depth, r::ao_input, r::output, r::raw, r::gbuffer_albedo, r::history, r::history_output, r::motion};
     return {r::uniforms, r::depth, r::ao_input, r::output, r::raw, r::gbuffer_albedo};
 }
 
@@ -108,7 +120,8 @@ inline std::vector<resource_role> pass_roles(pass_family f)
 inline bool is_texture(resource_role role)
 {
     return role == resource_role::depth || role == resource_role::normals || role == resource_role::noise ||
-           role == resource_role::ao_input || role == resource_role::depth_mips || role == resource_role::gbuffer_albedo;
+           role == resource_role::ao_input || role == resource_role::depth_mips || role == resource_role::gbuffer_albedo ||
+           role == resource_role::history || role == resource_role::motion;
 }
 
 // Does the pass gather from it (textureGather), so that WebGPU needs a sampler beside it?
@@ -155,6 +168,9 @@ inline const char* what_it_holds(resource_role r)
     case resource_role::raw: return "raw values before the guard, r32f (codegen::options::diagnostics only)";
     case resource_role::depth_mips: return "the depth MIP chain's levels 1.. in one r32f atlas (the prefilter's output; variants with depth mips only)";
     case resource_role::gbuffer_albedo: return "G-buffer albedo, full resolution, linear reflectance in .rgb (the last pass of -mbg variants only)";
+    case resource_role::history: return "the previous frame's history_output, rgba16f, the AO target's size (.r AO, .g log2 of view depth, .b frames held)";
+    case resource_role::history_output: return "this frame's history, rgba16f storage image; the engine swaps it with history for the next frame";
+    case resource_role::motion: return "motion vectors, full resolution, in .rg (-histmv only; history_params::motion says their convention)";
     }
     return "";
 }
@@ -164,7 +180,7 @@ inline const char* what_it_holds(resource_role r)
 inline std::string binding_table_markdown()
 {
     std::string md = "| passes | role | holds | vulkan | webgpu |\n|---|---|---|---:|---|\n";
-    for (pass_family f : {pass_family::ao, pass_family::filter, pass_family::prefilter})
+    for (pass_family f : {pass_family::ao, pass_family::filter, pass_family::prefilter, pass_family::history})
         for (resource_role r : pass_roles(f)) {
             const std::optional<uint32_t> s = sampler_binding_of(f, r, binding_model::webgpu);
             md += std::string("| ") + names::name_of(pass_family_names, f, "pass family") + " | `" + to_name(r) + "` | " + what_it_holds(r) + " | " +

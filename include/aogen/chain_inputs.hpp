@@ -27,6 +27,7 @@
 #include "variant.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct gbuffer {
     // width × height × 4, linear reflectance in rgb (a unused); read by -mbg variants only
     // (common/core.glsl's ao_albedo), may be empty for every other
     std::vector<float> albedo;
+    // width × height × 2, the renderer's motion vectors in .rg (history_params::motion says
+    // their convention); read by -histmv variants only, may be empty for every other
+    std::vector<float> motion;
 };
 
 // `g` with every pixel's albedo `rho` (grey): the albedo G-buffer of a renderer with one
@@ -59,11 +63,15 @@ struct chain_inputs {
 // What a chain of any variant reads at run time: the settings of each pass (a variant reads
 // its technique's and its blur's), the camera, and which frame of a temporal accumulation
 // this is (temporal.hpp; frame 0 is the single-frame output) and the sequence its frames
-// turn the noise by (van der Corput, measured best; the others for comparison).
+// turn the noise by (van der Corput, measured best; the others for comparison). A chain with
+// a history pass also reads the previous frame's camera (none: the camera stood still) and
+// whether to drop its history this frame (a camera cut, a resize, a teleport).
 struct chain_settings : ao_settings {
     uniforms::camera camera;
     uint32_t frame = 0;
     temporal::sequence frame_sequence = temporal::sequence::van_der_corput;
+    std::optional<uniforms::camera> previous_camera;
+    bool reset_history = false;
 };
 
 // `settings` seen through `camera`.
@@ -98,16 +106,17 @@ inline int output_scale(const variant& v)
 
 namespace detail {
 
-// What `v`'s passes read besides the G-buffer, for settings `s` and an AO target of
-// target_w × target_h: each pass's uniform block written into `blocks` (one laid-out block per
+// What `v`'s passes read besides the G-buffer, for settings `s` and a G-buffer of
+// screen_w × screen_h (its AO target's size from target_size): each pass's uniform block written into `blocks` (one laid-out block per
 // pass, in pass order: a plan's, computed once) -- the AO pass's with frame s.frame's rotation
 // of the noise and, GTAO's and VBAO's, its step offset; every one with the finalize settings --,
 // the noise tile the params name (4×4 for GTAO, VBAO and SAO) and, for SSAO, the kernel inside
 // its block (SAO's spiral is inside its own). `v` is a plan's: validated. The door is
 // codegen::plan::inputs (plan.hpp).
-inline chain_inputs pack_inputs(const variant& v, const chain_settings& s, int target_w, int target_h,
+inline chain_inputs pack_inputs(const variant& v, const chain_settings& s, int screen_w, int screen_h,
                                 const std::vector<const layout::struct_layout*>& blocks)
 {
+    const auto [target_w, target_h] = target_size(v, screen_w, screen_h);
     const technique_desc& t = technique_of(v.tech);
     chain_inputs in;
     in.noise_size = t.noise_size(s);
@@ -116,9 +125,11 @@ inline chain_inputs pack_inputs(const variant& v, const chain_settings& s, int t
     const uniforms::extras e{temporal::frame_rotation(v, s.frame, s.frame_sequence), s.finalize,
                             temporal::step_offset(s.frame_sequence, s.frame)};
     const std::vector<pass_kind> kinds = passes(v);
+    const uniforms::history_frame frame{s.camera, s.previous_camera.value_or(s.camera), {float(screen_w), float(screen_h)}, s.reset_history};
     for (size_t i = 0; i < kinds.size(); ++i)
-        in.uniforms.push_back(kinds[i] == pass_kind::ao ? t.pack(v, s, s.camera, tsize, *blocks.at(i), e)
-                                                        : uniforms::pack_blur(s.blur, s.camera.proj, tsize, *blocks.at(i), e));
+        in.uniforms.push_back(kinds[i] == pass_kind::ao        ? t.pack(v, s, s.camera, tsize, *blocks.at(i), e)
+                              : kinds[i] == pass_kind::history ? uniforms::pack_history(s.history, frame, *blocks.at(i), e)
+                                                               : uniforms::pack_blur(s.blur, s.camera.proj, tsize, *blocks.at(i), e));
     return in;
 }
 

@@ -59,6 +59,7 @@ struct variant_matrix {
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
     std::vector<multi_bounce_mode> multi_bounce{multi_bounce_mode::off};
     std::vector<bool> bent_normals{false}; // on: GTAO and VBAO compute variants only (others skip it)
+    std::vector<history_mode> history{history_mode::off}; // on: compute variants without bent normals only (others skip it)
 };
 
 // Appends canonical(v) unless an equal variant is already in `out`.
@@ -77,7 +78,7 @@ inline size_t combinations(const variant_matrix& m, size_t cap = size_t(1) << 40
     for (size_t n : {m.techniques.size(), m.samples.size(), m.slices.size(), m.steps.size(), m.blur.size(), m.blur_depth.size(),
                      m.normals.size(), m.point_cloud_fallback.size(), m.depth.size(), m.projection.size(), m.half_resolution.size(),
                      m.stage.size(), m.range_check.size(), m.output.size(), m.decisions.size(), m.fp16.size(), m.upsample.size(), m.multi_bounce.size(),
-                     m.bent_normals.size()})
+                     m.bent_normals.size(), m.history.size()})
         product = n == 0 ? 0 : std::min(product * std::min(n, cap + 1), cap + 1);
     return product;
 }
@@ -107,15 +108,17 @@ inline std::vector<variant> expand(const variant_matrix& m)
     for (bool fp16 : m.fp16)
     for (upsample_mode up : m.upsample)
     for (multi_bounce_mode mb : m.multi_bounce)
-    for (bool bn : m.bent_normals) {
+    for (bool bn : m.bent_normals)
+    for (history_mode hist : m.history) {
         v.tech = t, v.samples = samples, v.slices = slices, v.steps = steps;
         v.blur = blur, v.blur_depth = bd, v.normals = n, v.point_cloud_fallback = pc;
         v.depth = d, v.projection = p, v.half_resolution = half, v.stage = stage;
         v.range_check = rc, v.output = o, v.decisions = dec, v.fp16 = fp16, v.upsample = up, v.multi_bounce = mb;
-        v.bent_normals = bn;
+        v.bent_normals = bn, v.history = hist;
         if (pc && t != technique::ssao) continue;
         if (fp16 && t == technique::sao) continue;
         if (bn && (!has_slices(t) || stage != pipeline_stage::compute)) continue;
+        if (hist != history_mode::off && (bn || stage != pipeline_stage::compute)) continue;
         validate(v);
         const variant c = canonical(v);
         if (seen.insert(to_name(c)).second) out.push_back(c);

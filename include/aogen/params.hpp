@@ -15,7 +15,10 @@
 //                 depth-aware upsample's
 //   finalize_params  what the chain's last pass does to the AO it writes: the albedo of a
 //                 multi-bounce variant (-mb)
-//   ao_settings   all six: what a chain of any variant reads (chain_inputs.hpp)
+//   history_params   the history pass of a -hist or -histmv variant: how much of each new
+//                 frame it takes, how it clamps the history, when it rejects it, and the
+//                 convention of the renderer's motion vectors
+//   ao_settings   all seven: what a chain of any variant reads (chain_inputs.hpp)
 //
 // What a variant compiles in -- sample, slice and step counts, the blur, where normals
 // come from, half resolution, SSAO's output form and range check -- is not here: those
@@ -44,6 +47,7 @@
 #pragma once
 
 #include "error.hpp"
+#include "names.hpp"
 #include "range.hpp"
 
 #include <array>
@@ -497,6 +501,118 @@ inline void validate(const finalize_params& p, std::string_view prefix = "finali
 }
 
 // ---------------------------------------------------------------------------------
+// History: the history pass of a -hist or -histmv variant (history.glsl)
+// ---------------------------------------------------------------------------------
+
+// How the history is held to this frame's neighbourhood of filtered AO (the 3 x 3 AO target
+// pixels around the pixel) before it is blended, so that what the depth test lets through
+// -- a surface whose light changed, a thin occluder moving over it -- cannot linger.
+enum class history_clamp {
+    none,     // no clamp: the depth test alone rejects
+    range,    // to the pixel's own AO +- range (UE5's GTAO temporal filter: +-0.1)
+    min_max,  // to the neighbourhood's [min, max], widened by min_max_widening (HDRP's GTAO, three.js)
+    variance, // to mean +- variance_gamma standard deviations of the neighbourhood (Salvi 2016's variance clipping)
+};
+inline constexpr std::array<enum_name<history_clamp>, 4> history_clamp_names{{
+    {history_clamp::none, "none"},
+    {history_clamp::range, "range"},
+    {history_clamp::min_max, "min_max"},
+    {history_clamp::variance, "variance"},
+}};
+
+// The unit of a motion vector's two components.
+enum class motion_units {
+    uv,     // a share of the screen's width and height (Unity, Godot)
+    ndc,    // normalised device coordinates, [-1, 1] across the screen: twice uv (UE5, three.js)
+    pixels, // screen pixels
+};
+inline constexpr std::array<enum_name<motion_units>, 3> motion_units_names{{
+    {motion_units::uv, "uv"},
+    {motion_units::ndc, "ndc"},
+    {motion_units::pixels, "pixels"},
+}};
+
+// Which way a motion vector points.
+enum class motion_direction {
+    previous_to_current, // current position - previous position (UE5, Unity, three.js)
+    current_to_previous, // previous position - current position (where to read the history)
+};
+inline constexpr std::array<enum_name<motion_direction>, 2> motion_direction_names{{
+    {motion_direction::previous_to_current, "previous_to_current"},
+    {motion_direction::current_to_previous, "current_to_previous"},
+}};
+
+// Which way a motion vector's y grows on the screen.
+enum class motion_y {
+    up,   // y grows up the screen, as NDC's does (UE5, three.js, Unity's uv)
+    down, // y grows down, as pixel rows and Vulkan's, D3D's and WebGPU's uv do
+};
+inline constexpr std::array<enum_name<motion_y>, 2> motion_y_names{{
+    {motion_y::up, "up"},
+    {motion_y::down, "down"},
+}};
+
+// The renderer's motion vectors as a -histmv variant reads them (bindings.hpp's motion role:
+// .rg of a full-resolution texture, per screen pixel). The default is the convention UE5 and
+// three.js write: NDC units, current minus previous, y up.
+struct motion_convention {
+    motion_units units = motion_units::ndc;
+    motion_direction direction = motion_direction::previous_to_current;
+    motion_y y = motion_y::up;
+};
+
+struct history_params {
+    // This frame's weight in the output once the history is long: out = mix(history, this
+    // frame, w) with w = max(blend, 1 / (n + 1)) for a history of n frames. So the first frames
+    // after a reset or a disocclusion are averaged evenly -- a still camera's n-th output is
+    // the plain mean of its n frames, the mean the report's accumulated figure scores -- and
+    // from n = 1 / blend - 1 on, each frame's share decays by (1 - blend) per frame: an
+    // exponential window of about 2 / blend - 1 frames. 1 keeps no history.
+    // Default 0.1: UE5's AmbientOcclusionTemporalBlendWeight and three.js's alpha; HDRP's
+    // feedback 0.85..0.95 is 0.05..0.15 here. To be chosen by the error in motion.
+    static constexpr float_range blend_range{0.01f, 1.0f, false};
+    float blend = 0.1f;
+
+    // The clamp (history_clamp), and its width for each kind; only the clamp's own is read.
+    history_clamp clamp = history_clamp::variance;
+    // range: the history stays within this of the pixel's AO. UE5: 0.1.
+    static constexpr float_range range_range{0.0f, 1.0f, false};
+    float range = 0.1f;
+    // min_max: added to both ends of the neighbourhood's [min, max]. HDRP widens by motion; 0 (ours) is the plain box.
+    static constexpr float_range min_max_widening_range{0.0f, 1.0f, false};
+    float min_max_widening = 0.0f;
+    // variance: gamma, in standard deviations. Salvi's 1..1.25; 1 (ours).
+    static constexpr float_range variance_gamma_range{0.0f, 16.0f, false};
+    float variance_gamma = 1.0f;
+
+    // Disocclusion: a history texel is another surface's, and is not used, when the view
+    // depth it holds differs from the depth this pixel's point had in the previous frame by
+    // more than this share of it. The test reads the history's 2 x 2 texels about the point,
+    // each up to a texel from it, so a plane seen at a grazing angle needs room for its depth's
+    // change over a texel. 0.05 (ours). Range (0, 1].
+    static constexpr float_range depth_tolerance_range{0.0f, 1.0f, true};
+    float depth_tolerance = 0.05f;
+
+    // How the renderer's motion vectors are written (a -histmv variant's).
+    motion_convention motion;
+};
+
+inline void validate(const history_params& p, std::string_view prefix = "history")
+{
+    using detail::field;
+    using P = history_params;
+    require_in(field(prefix, "blend"), p.blend, P::blend_range);
+    names::require_listed(history_clamp_names, p.clamp, field(prefix, "clamp"));
+    require_in(field(prefix, "range"), p.range, P::range_range);
+    require_in(field(prefix, "min_max_widening"), p.min_max_widening, P::min_max_widening_range);
+    require_in(field(prefix, "variance_gamma"), p.variance_gamma, P::variance_gamma_range);
+    require_in(field(prefix, "depth_tolerance"), p.depth_tolerance, P::depth_tolerance_range);
+    names::require_listed(motion_units_names, p.motion.units, field(prefix, "motion.units"));
+    names::require_listed(motion_direction_names, p.motion.direction, field(prefix, "motion.direction"));
+    names::require_listed(motion_y_names, p.motion.y, field(prefix, "motion.y"));
+}
+
+// ---------------------------------------------------------------------------------
 // All passes
 // ---------------------------------------------------------------------------------
 
@@ -509,6 +625,7 @@ struct ao_settings {
     sao_params sao;
     blur_params blur;
     finalize_params finalize;
+    history_params history;
 };
 
 inline void validate(const ao_settings& s)
@@ -519,6 +636,7 @@ inline void validate(const ao_settings& s)
     validate(s.sao, "sao");
     validate(s.blur, "blur");
     validate(s.finalize, "finalize");
+    validate(s.history, "history");
 }
 
 } // namespace aogen

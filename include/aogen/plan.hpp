@@ -124,6 +124,14 @@ inline void validate(const options& o)
         fail("output format", "r8 is not a storage texture format of core WebGPU", "valid: rgba8, r32f, rgba16f");
 }
 
+// The history's format (history.glsl): .r the AO, .g log2 of the view depth, .b the frames it
+// holds. 16-bit floats, not 8-bit unorm: a blend of 0.1 moves an 8-bit history only when this
+// frame differs from it by more than 0.5 / 255 / 0.1 = 0.02 -- it sticks that far from
+// where it should converge -- where 16 bits stick within 0.0025; log2 depth keeps 16 bits'
+// relative precision from micrometres to kilometres. rgba16f is a storage format of every
+// target (core WebGPU and OpenGL ES 3.1 have no rg16f storage).
+inline constexpr const char* history_format = "rgba16f";
+
 // The format the AO passes of `v` write: o.output_format, widened to four channels for a
 // bent-normal variant, whose passes write (AO, bent normal) -- r8 becomes rgba8, the same
 // 8-bit unorm channels; rgba8 and rgba16f are kept. r32f has no four-channel format here:
@@ -201,7 +209,8 @@ inline void require_pass(const variant& v, pass_kind pass)
 
 inline layout::block_desc uniform_block_of(const variant& v, pass_kind pass)
 {
-    return pass == pass_kind::ao ? technique_of(v.tech).block(v) : uniforms::blur_block();
+    if (pass == pass_kind::ao) return technique_of(v.tech).block(v);
+    return pass == pass_kind::history ? uniforms::history_block() : uniforms::blur_block();
 }
 
 inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shader_stage stage, const options& o)
@@ -216,6 +225,7 @@ inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shad
                               : role == resource_role::raw            ? o.diagnostics
                               : role == resource_role::depth_mips     ? has_prefilter_pass(v)
                               : role == resource_role::gbuffer_albedo ? reads_albedo(v, pass)
+                              : role == resource_role::motion         ? v.history == history_mode::motion_vectors
                                                                       : true;
         if (!declared) continue;
         const uint32_t binding = binding_of(family, role, o.model);
@@ -225,6 +235,7 @@ inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shad
             // The prefilter writes raw depth, whatever format the AO images have.
             r.push_back({0, binding, k::storage_image, name, "", pass == pass_kind::prefilter ? "r32f" : output_format_of(v, o), role});
         else if (role == resource_role::raw) r.push_back({0, binding, k::storage_image, name, "", "r32f", role});
+        else if (role == resource_role::history_output) r.push_back({0, binding, k::storage_image, name, "", history_format, role});
         else if (o.model == binding_model::vulkan) r.push_back({0, binding, k::combined_image_sampler, name, "", "", role});
         else {
             r.push_back({0, binding, k::sampled_image, name, "", "", role});
@@ -248,6 +259,7 @@ inline std::vector<std::string> template_files_of(const variant& v, pass_kind pa
     case pass_kind::blur_box: files.push_back("blur_box.glsl"); break;
     case pass_kind::blur_denoise: files.push_back("blur_denoise.glsl"); break;
     case pass_kind::upsample: files.push_back("upsample.glsl"); break;
+    case pass_kind::history: files.push_back("history.glsl"); break;
     case pass_kind::prefilter: files.push_back("prefilter.glsl"); return files; // its own entry point
     }
     files.push_back(stage == shader_stage::compute ? "entry_compute.glsl" : "entry_fragment.glsl");
@@ -302,6 +314,8 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
         for (define& t : technique_of(v.tech).defines(v)) d.push_back(std::move(t));
     } else if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
         d.push_back(choice_define("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth")));
+    } else if (pass == pass_kind::history) {
+        d.push_back(choice_define("HISTORY", names::name_of(history_mode_names, v.history, "history")));
     }
     return d;
 }
@@ -404,8 +418,7 @@ public:
     {
         std::vector<const layout::struct_layout*> blocks;
         for (size_t i = 0; i < passes_.size(); ++i) blocks.push_back(&pass_shader(i).layout);
-        const auto [tw, th] = target_size(w, h);
-        return aogen::detail::pack_inputs(variant_, s, tw, th, blocks);
+        return aogen::detail::pack_inputs(variant_, s, w, h, blocks);
     }
 
     // This plan under other options (a target's binding model or output format, diagnostics,

@@ -22,7 +22,8 @@
 //   5 levels, read by far taps: depth_mips.hpp), `deint` (the AO pass dispatched as 4 x 4
 //   interleaved layers), `bn` (bent normals written beside the AO), `mb` (multi-bounce in
 //   the last pass's finalize step, one albedo) or `mbg` (the same, each pixel's albedo from
-//   the G-buffer), `wg16x16` (workgroup size).
+//   the G-buffer), `hist` or `histmv` (the history pass, reprojecting by the camera or by the
+//   renderer's motion vectors), `wg16x16` (workgroup size).
 //
 // USAGE
 //     aogen::variant v;                          // the defaults: ssao-s16-half-bilateral-...
@@ -114,6 +115,13 @@ struct variant {
     // output (AO in .r, the normal in .gba: common/core.glsl's ao_value). GTAO and VBAO,
     // compute stage (a fragment pass's target is one channel). Default: off.
     bool bent_normals = false;
+    // The history pass (history.glsl): after the spatial filter, at the AO target's
+    // resolution and before the upsample, the chain blends this frame's filtered AO with its
+    // own output of the previous frame, found by the camera (-hist) or the renderer's motion
+    // vectors (-histmv), rejected where the surface there was another (a depth test) and
+    // clamped to this frame's neighbourhood (history_params). Compute stage; not with bent
+    // normals (the history holds the AO alone). Default: off.
+    history_mode history = history_mode::off;
 };
 
 // The side of the pixel lattice a deinterleaved AO pass walks one layer of: the side of the
@@ -184,6 +192,13 @@ inline void validate(const variant& v)
              "valid: gtao, vbao, or off");
     if (v.bent_normals && v.stage != pipeline_stage::compute)
         fail("bent normals", "need the compute stage (a fragment pass writes one channel, the AO)", "valid: off with the fragment stage");
+    names::require_listed(history_mode_names, v.history, "history");
+    if (v.history != history_mode::off && v.stage != pipeline_stage::compute)
+        fail("history", "needs the compute stage (the history pass writes two images, the AO and the history; a fragment pass writes one)",
+             "valid: off with the fragment stage");
+    if (v.history != history_mode::off && v.bent_normals)
+        fail("history", "is not available with bent normals (the history holds the AO alone, and would blur the normal's frames apart)",
+             "valid: off with -bn, or the variant without -bn");
 }
 
 // ---------------------------------------------------------------------------------
@@ -193,8 +208,8 @@ inline void validate(const variant& v)
 // A variant runs as a chain: (with a depth MIP chain) the prefilter pass that builds it, the
 // AO pass, its blur passes, then (half resolution with the depth-aware upsample) the upsample
 // pass, the only one whose output is screen-sized.
-enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample, prefilter };
-inline constexpr std::array<enum_name<pass_kind>, 7> pass_kind_names{{
+enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample, prefilter, history };
+inline constexpr std::array<enum_name<pass_kind>, 8> pass_kind_names{{
     {pass_kind::ao, "ao"},
     {pass_kind::blur_x, "blur_x"},
     {pass_kind::blur_y, "blur_y"},
@@ -202,7 +217,11 @@ inline constexpr std::array<enum_name<pass_kind>, 7> pass_kind_names{{
     {pass_kind::blur_denoise, "blur_denoise"},
     {pass_kind::upsample, "upsample"},
     {pass_kind::prefilter, "prefilter"},
+    {pass_kind::history, "history"},
 }};
+
+// Does `v` blend its AO with the previous frame's in a history pass (history.glsl)?
+inline bool has_history_pass(const variant& v) { return v.history != history_mode::off; }
 
 // Does `v` start with the prefilter pass (a depth MIP chain)?
 inline bool has_prefilter_pass(const variant& v) { return v.depth_mips > 1; }
@@ -245,6 +264,7 @@ inline std::vector<pass_kind> passes(const variant& v)
     case blur_mode::none: break;
     default: names::fail_unlisted(blur_mode_names, v.blur, "blur");
     }
+    if (has_history_pass(v)) p.push_back(pass_kind::history); // at the target's resolution, before the upsample
     if (has_upsample_pass(v)) p.push_back(pass_kind::upsample);
     return p;
 }
@@ -302,7 +322,7 @@ inline bool operator==(const variant& a, const variant& b)
            x.half_resolution == y.half_resolution && x.stage == y.stage && x.workgroup_x == y.workgroup_x &&
            x.workgroup_y == y.workgroup_y && x.range_check == y.range_check && x.output == y.output && x.decisions == y.decisions && x.fp16 == y.fp16 &&
            x.upsample == y.upsample && x.depth_mips == y.depth_mips && x.deinterleaved == y.deinterleaved && x.multi_bounce == y.multi_bounce &&
-           x.bent_normals == y.bent_normals;
+           x.bent_normals == y.bent_normals && x.history == y.history;
 }
 inline bool operator!=(const variant& a, const variant& b) { return !(a == b); }
 
@@ -325,8 +345,8 @@ inline constexpr std::array<enum_name<pipeline_stage>, 2> stage_tokens{{
 
 // The extras of a variant name, in the order a canonical name writes them (name_of); what
 // variant_from_name accepts after the eight fixed tokens, and what `aogen list` shows.
-inline constexpr std::array<const char*, 13> extra_tokens{
-    {"rawdepth", "pc", "rc004", "powint", "step", "fp16", "nearest", "mip<N>", "deint", "bn", "mb", "mbg", "wg<X>x<Y>"}};
+inline constexpr std::array<const char*, 15> extra_tokens{
+    {"rawdepth", "pc", "rc004", "powint", "step", "fp16", "nearest", "mip<N>", "deint", "bn", "mb", "mbg", "hist", "histmv", "wg<X>x<Y>"}};
 
 inline std::string extra_token_list()
 {
@@ -387,6 +407,8 @@ inline std::string name_of(const variant& input)
     if (v.bent_normals) name += "-bn";
     if (v.multi_bounce == multi_bounce_mode::uniform_albedo) name += "-mb";
     if (v.multi_bounce == multi_bounce_mode::gbuffer_albedo) name += "-mbg";
+    if (v.history == history_mode::camera) name += "-hist";
+    if (v.history == history_mode::motion_vectors) name += "-histmv";
     if (v.workgroup_x != d.workgroup_x || v.workgroup_y != d.workgroup_y)
         name += "-wg" + std::to_string(v.workgroup_x) + "x" + std::to_string(v.workgroup_y);
     return name;
@@ -430,10 +452,12 @@ inline variant variant_from_name(const std::string& name)
     std::vector<std::string> seen;
     for (size_t i = 8; i < t.size(); ++i) {
         const std::string& x = t[i];
-        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x.rfind("mip", 0) == 0 ? "mip" : x == "mbg" ? "mb" : x;
+        const std::string kind = x.rfind("wg", 0) == 0 ? "wg" : x.rfind("mip", 0) == 0 ? "mip" : x == "mbg" ? "mb" : x == "histmv" ? "hist" : x;
         if (std::find(seen.begin(), seen.end(), kind) != seen.end()) {
             if (kind == "mb" && std::find(t.begin() + 8, t.begin() + i, x) == t.begin() + i)
                 fail(subject, quote(x) + " is a second multi-bounce extra", "valid: one of mb, mbg");
+            if (kind == "hist" && std::find(t.begin() + 8, t.begin() + i, x) == t.begin() + i)
+                fail(subject, quote(x) + " is a second history extra", "valid: one of hist, histmv");
             fail(subject, quote(x) + " appears twice", "valid: each extra once");
         }
         seen.push_back(kind);
@@ -448,6 +472,8 @@ inline variant variant_from_name(const std::string& name)
         else if (x == "bn") v.bent_normals = true;
         else if (x == "mb") v.multi_bounce = multi_bounce_mode::uniform_albedo;
         else if (x == "mbg") v.multi_bounce = multi_bounce_mode::gbuffer_albedo;
+        else if (x == "hist") v.history = history_mode::camera;
+        else if (x == "histmv") v.history = history_mode::motion_vectors;
         else if (kind == "mip") {
             if ((v.depth_mips = detail::parse_count(x, 3)) < 0) fail(subject, quote(x) + " is not a depth MIP level count", "valid: mip2..mip5");
         } else if (kind == "wg") {

@@ -27,6 +27,9 @@ inline dawn_result run_variant_on_dawn(const codegen::plan& p, const std::vector
     if (has_prefilter_pass(v))
         fail("wgsl on dawn", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");
+    if (has_history_pass(v))
+        fail("wgsl on dawn", to_name(v) + " has a history pass, which this runner does not keep yet",
+             "valid: variants without -hist or -histmv (the Vulkan harness runs those with one)");
     const std::vector<pass_kind>& ps = p.passes();
     const size_t per_pass = v.stage == pipeline_stage::compute ? 1 : 2; // codegen's order: vertex, then fragment
     if (texts.size() != ps.size() * per_pass || in.uniforms.size() != ps.size())

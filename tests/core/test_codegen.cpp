@@ -59,7 +59,10 @@ std::vector<variant> broad_set()
                              "sao-s8-half-denoise-gbufview-rev-persp-cs-mip3-deint", "sao-s32-full-box-gbufworld-std-ortho-fs",
                              // multi-bounce in every kind of last pass: AO, blurs, upsample; both stages
                              "gtao-2x3-full-noblur-gbufworld-std-persp-cs-mb", "ssao-s16-half-bilateral-gbufworld-std-persp-fs-mb",
-                             "vbao-2x3-half-denoise-recon-std-persp-cs-nearest-mb", "sao-s16-full-box-gbufworld-std-persp-fs-mb"})
+                             "vbao-2x3-half-denoise-recon-std-persp-cs-nearest-mb", "sao-s16-full-box-gbufworld-std-persp-fs-mb",
+                             // the history pass: each technique, by the camera and by motion vectors, last or before the upsample
+                             "gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist", "ssao-s16-full-bilateral-recon-revinf-ortho-cs-histmv",
+                             "sao-s8-half-box-gbufview-rev-persp-cs-nearest-mb-hist", "vbao-2x3-half-noblur-gbufworld-std-persp-cs-mip3-deint-histmv"})
         vs.push_back(variant_from_name(name));
     return vs;
 }
@@ -458,6 +461,8 @@ TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute s
                     if (r.role == resource_role::output) {
                         CHECK(r.kind == resource_kind::storage_image);
                         CHECK(r.format == format);
+                    } else if (r.role == resource_role::history_output) { // the history keeps its own format
+                        CHECK(r.format == codegen::history_format);
                     } else if (r.role != resource_role::raw) {
                         CHECK(r.format.empty());
                     }

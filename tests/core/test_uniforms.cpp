@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
 
 // One namespace per test file: the files of one executable share a translation unit
@@ -205,6 +206,62 @@ TEST_CASE("Packing sizes the SSAO block by its kernel and rejects kernels out of
     CHECK_THROWS_WITH(uniforms::pack_ssao(bad, cam, kernel::crytek(16, 1), {960, 540}, rules::std140),
                       Catch::Contains("ssao.radius"));
     CHECK_THROWS_AS(uniforms::pack_ssao(ssao, cam, kernel::crytek(16, 1), {0, 540}, rules::std140), aogen::error);
+}
+
+TEST_CASE("uniforms: the history block: members at std140's offsets, the camera's move exact when it stood still, each motion convention's scale", "[uniforms]")
+{
+    // std140 by hand: three mat4 (64 bytes each), a vec2 at 192, then six 4-byte scalars; 224.
+    const layout::struct_layout block = layout::compute(uniforms::history_block(), rules::std140);
+    CHECK(block.size == 224);
+    const mat4 proj = perspective(0.6f, 1.5f, 0.1f, 100.0f);
+    mat4 here;
+    here.columns[3] = {-2.0f, -0.5f, 0.25f, 1.0f}; // a camera at (2, 0.5, -0.25)
+    history_params p;
+    p.clamp = history_clamp::range;
+    p.range = 0.125f;
+    uniforms::history_frame f{{here, proj}, {here, proj}, {1920, 1080}, false};
+    std::vector<uint8_t> still = uniforms::pack_history(p, f, block);
+    REQUIRE(still.size() == 224);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) CHECK(float_at(still, 64 + 16 * c + 4 * r) == (c == r ? 1.0f : 0.0f)); // the identity, to the bit
+    CHECK(float_at(still, 128 + 0) == proj[0][0]);
+    CHECK(float_at(still, 192) == -0.5f); // NDC, current minus previous, y up: previous uv = uv - 0.5 (x, -y)
+    CHECK(float_at(still, 196) == 0.5f);
+    CHECK(float_at(still, 200) == 0.1f);
+    int32_t kind;
+    std::memcpy(&kind, still.data() + 204, 4);
+    CHECK(kind == 1);
+    CHECK(float_at(still, 208) == 0.125f);
+    CHECK(float_at(still, 212) == Approx(std::log2(1.05)).epsilon(1e-6));
+    CHECK(float_at(still, 216) == 0.0f);
+    CHECK(float_at(still, 220) == finalize_params{}.albedo);
+    // The camera moved to (2, 0.5, -0.25) from the origin: this view's point x is x + (2, 0.5, -0.25) in the previous view.
+    f.previous = {mat4{}, proj};
+    f.reset = true;
+    const std::vector<uint8_t> moved = uniforms::pack_history(p, f, block);
+    CHECK(float_at(moved, 64 + 48) == 2.0f);
+    CHECK(float_at(moved, 64 + 52) == 0.5f);
+    CHECK(float_at(moved, 64 + 56) == -0.25f);
+    CHECK(float_at(moved, 216) == 1.0f);
+    // The conventions, by hand: previous uv = uv + scale * vector, uv's y down.
+    CHECK(uniforms::motion_scale({motion_units::uv, motion_direction::current_to_previous, motion_y::down}, {1920, 1080}).x == 1.0f);
+    CHECK(uniforms::motion_scale({motion_units::uv, motion_direction::current_to_previous, motion_y::down}, {1920, 1080}).y == 1.0f);
+    CHECK(uniforms::motion_scale({motion_units::uv, motion_direction::previous_to_current, motion_y::up}, {1920, 1080}).y == 1.0f);
+    CHECK(uniforms::motion_scale({motion_units::pixels, motion_direction::previous_to_current, motion_y::down}, {1920, 1080}).x == -1.0f / 1920);
+    CHECK(uniforms::motion_scale({motion_units::pixels, motion_direction::previous_to_current, motion_y::down}, {1920, 1080}).y == -1.0f / 1080);
+    // Bad settings, by name.
+    history_params bad;
+    bad.blend = 0.0f;
+    CHECK_THROWS_WITH(uniforms::pack_history(bad, f, block), Catch::Contains("history.blend: 0 is out of range") && Catch::Contains("valid:"));
+    bad = {};
+    bad.depth_tolerance = 0.0f;
+    CHECK_THROWS_WITH(uniforms::pack_history(bad, f, block), Catch::Contains("history.depth_tolerance"));
+    bad = {};
+    bad.clamp = static_cast<history_clamp>(9);
+    CHECK_THROWS_WITH(uniforms::pack_history(bad, f, block), Catch::Contains("history.clamp") && Catch::Contains("none, range, min_max, variance"));
+    bad = {};
+    bad.motion.units = static_cast<motion_units>(5);
+    CHECK_THROWS_WITH(uniforms::pack_history(bad, f, block), Catch::Contains("history.motion.units") && Catch::Contains("uv, ndc, pixels"));
 }
 
 } // namespace unity_test_uniforms

@@ -47,6 +47,35 @@ std::vector<variant> broad_set()
 
 } // namespace
 
+TEST_CASE("variant: the history pass is -hist or -histmv, runs after the blur and before the upsample, and is refused by name where it cannot run", "[variant]")
+{
+    const variant cam = variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist");
+    CHECK(cam.history == history_mode::camera);
+    CHECK(passes(cam) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_denoise, pass_kind::history, pass_kind::upsample});
+    const variant mv = variant_from_name("ssao-s16-full-noblur-gbufworld-std-persp-cs-mb-histmv-wg16x16");
+    CHECK(mv.history == history_mode::motion_vectors);
+    CHECK(passes(mv) == std::vector<pass_kind>{pass_kind::ao, pass_kind::history});
+    CHECK(applies_multi_bounce(mv, pass_kind::history));
+    CHECK(!applies_multi_bounce(mv, pass_kind::ao));
+    CHECK(cam != variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs"));
+    CHECK(to_name(cam) == "gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist");
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist-histmv"), Contains("a second history extra") && Contains("valid: one of hist, histmv"));
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist-hist"), Contains("appears twice"));
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-fs-hist"), Contains("history: needs the compute stage"));
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-bn-hist"), Contains("history: is not available with bent normals"));
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-wg8x8-hist"), Contains("not in canonical form"));
+    variant bad = cam;
+    bad.history = static_cast<history_mode>(7);
+    CHECK_THROWS_WITH(validate(bad), Contains("history") && Contains("valid: off, camera, motion_vectors"));
+    // A matrix skips what cannot run, as it does for bent normals.
+    variant_matrix m;
+    m.techniques = {technique::gtao};
+    m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
+    m.bent_normals = {false, true};
+    m.history = {history_mode::off, history_mode::camera, history_mode::motion_vectors};
+    CHECK(expand(m).size() == 1 + 3 + 1); // fs: off; cs: off, hist, histmv; cs-bn: off
+}
+
 TEST_CASE("variant: the default's name is the one docs/design.md spells", "[variant]")
 {
     CHECK(to_name(variant{}) == "ssao-s16-half-bilateral-gbufworld-std-persp-cs");

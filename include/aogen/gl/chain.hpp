@@ -271,6 +271,9 @@ inline chain_result run(const context& ctx, const codegen::plan& p, const std::v
     if (has_prefilter_pass(v))
         fail("gl chain", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");
+    if (has_history_pass(v))
+        fail("gl chain", to_name(v) + " has a history pass, which this runner does not keep yet",
+             "valid: variants without -hist or -histmv (the Vulkan harness runs those with one)");
     const std::vector<pass_kind>& kinds = p.passes();
     const std::vector<shader_stage> stages = codegen::stages(v);
     if (texts.size() != kinds.size() * stages.size() || in.uniforms.size() != kinds.size())

@@ -40,6 +40,7 @@
 #pragma once
 
 #include <aogen/bent_normals.hpp>
+#include <aogen/half.hpp>
 #include "diagnostics.hpp"
 #include "inputs.hpp"
 #include "passes.hpp"
@@ -90,7 +91,10 @@ public:
         if (in.uniforms.size() != passes.size())
             throw error("vulkan bound chain: uniform bytes for " + std::to_string(in.uniforms.size()) + " passes given to " + passes.name() +
                         " (valid: one block per pass, " + std::to_string(passes.size()) + ")");
-        for (size_t i = 0; i < passes.size(); ++i) has_raw_ = has_raw_ || declares_raw(i);
+        for (size_t i = 0; i < passes.size(); ++i) {
+            has_raw_ = has_raw_ || declares_raw(i);
+            if (passes[i].kind == pass_kind::history) history_pass_ = i;
+        }
         resource_scope staging(ctx);
         VkCommandBuffer cb = staging.begin_commands();
         upload_inputs(cb, in, staging);
@@ -122,12 +126,61 @@ public:
             const image& out = outputs_[i];
             barrier(cb, out, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.layout, 0, use.access, readers, use.stage);
             if (has_raw_) raw_barrier(cb, raws_[i]);
+            const bool history = i == history_pass_;
+            if (history) history_write_barrier(cb, true);
             const auto [w, h] = dispatch_size(i);
-            passes_.record(cb, i, sets_[i], framebuffers_[i], w, h);
+            passes_.record(cb, i, history && parity_ ? history_set_ : sets_[i], framebuffers_[i], w, h);
             barrier(cb, out, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
                     use.stage, readers);
+            if (history) history_write_barrier(cb, false);
             if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, ts.first + static_cast<uint32_t>(i + 1));
         }
+        // The history written is the one the next frame reads: each record() is one frame.
+        if (history_pass_ != no_pass) parity_ ^= 1;
+    }
+
+    // Does the chain keep a history (a -hist or -histmv variant)?
+    bool has_history() const { return history_pass_ != no_pass; }
+
+    // The history the next record() reads -- the one the last wrote -- as 4 floats per AO
+    // target texel (.r AO, .g log2 view depth, .b frames held; history.glsl).
+    std::vector<float> read_history() const
+    {
+        require_history("read_history");
+        const auto [w, h] = sizes_[history_pass_];
+        resource_scope sc(ctx_);
+        VkCommandBuffer cb = sc.begin_commands();
+        const image& img = history_[parity_];
+        barrier(cb, img, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT, passes_.reader_stage(), VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const buffer host = sc.read_back(cb, img, w, h, 8);
+        barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
+                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, passes_.reader_stage());
+        sc.submit(cb);
+        std::vector<float> out(static_cast<size_t>(w) * h * 4);
+        const auto* halves = static_cast<const uint16_t*>(host.mapped);
+        for (size_t k = 0; k < out.size(); ++k) out[k] = half_to_float(halves[k]);
+        return out;
+    }
+
+    // Replaces the history the next record() reads by `rgba` (4 floats per texel, rounded
+    // to 16 bits): an engine's own history, or a test's planted values. It must have the AO
+    // target's size: another is refused by name.
+    void load_history(int w, int h, const std::vector<float>& rgba)
+    {
+        require_history("load_history");
+        const auto [tw, th] = sizes_[history_pass_];
+        if (w != tw || h != th || rgba.size() != static_cast<size_t>(w < 0 ? 0 : w) * static_cast<size_t>(h < 0 ? 0 : h) * 4)
+            fail("history", std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(rgba.size()) + " values is not the AO target of " +
+                                passes_.name() + " for a " + std::to_string(depth_size_.first) + "x" + std::to_string(depth_size_.second) + " G-buffer",
+                 "valid: " + std::to_string(tw) + "x" + std::to_string(th) + ", 4 values per texel");
+        std::vector<uint16_t> halves(rgba.size());
+        for (size_t k = 0; k < rgba.size(); ++k) halves[k] = float_to_half(rgba[k]);
+        resource_scope staging(ctx_);
+        VkCommandBuffer cb = staging.begin_commands();
+        scope_.update_image(cb, history_[parity_], w, h, halves.data(), halves.size() * 2, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                            passes_.reader_stage(), staging);
+        staging.submit(cb);
     }
 
     // New uniform bytes for every pass, the same sizes (another frame of the same settings:
@@ -143,6 +196,19 @@ public:
         for (size_t i = 0; i < uniforms_.size(); ++i)
             scope_.update_buffer(cb, uniforms_[i].first, in.uniforms[i].data(), in.uniforms[i].size(), passes_.reader_stage(), staging);
         staging.submit(cb);
+    }
+
+    // Another G-buffer of the same size for the frames to come (a frame loop's next frame:
+    // another view, other motion vectors); uniforms, noise, outputs and history stay. Every
+    // set is written anew, so nothing recorded before may still be running: run_once() and
+    // the timing loops wait for their work.
+    void set_gbuffer(const gpu_gbuffer& g)
+    {
+        if (g.width() != depth_size_.first || g.height() != depth_size_.second)
+            fail("vulkan bound chain G-buffer", std::to_string(g.width()) + "x" + std::to_string(g.height()) + " for " + passes_.name() + " bound to " +
+                                                    std::to_string(depth_size_.first) + "x" + std::to_string(depth_size_.second),
+                 "valid: the size it was bound with (bind the chain anew for another size)");
+        write_sets(g);
     }
 
     // Every output filled with `clear`, the chain run once, the last output read back.
@@ -198,6 +264,28 @@ public:
     }
 
 private:
+    static constexpr size_t no_pass = ~size_t(0);
+
+    void require_history(const char* what) const
+    {
+        if (history_pass_ == no_pass)
+            fail("vulkan bound chain " + std::string(what), passes_.name() + " has no history pass", "valid: a -hist or -histmv variant");
+    }
+
+    // The history the history pass writes this frame, moved to GENERAL before the pass
+    // (`before`) and back to SHADER_READ_ONLY_OPTIMAL after it; the one it reads stays there.
+    void history_write_barrier(VkCommandBuffer cb, bool before) const
+    {
+        const image& written = history_[parity_ ^ 1];
+        const VkPipelineStageFlags stage = passes_.reader_stage();
+        if (before)
+            barrier(cb, written, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT, stage | VK_PIPELINE_STAGE_TRANSFER_BIT, stage);
+        else
+            barrier(cb, written, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT, stage, stage | VK_PIPELINE_STAGE_TRANSFER_BIT);
+    }
+
     // Records the copy of output `i` into a host buffer, leaving the image where it was
     // (SHADER_READ_ONLY_OPTIMAL); the buffer holds its texels once `cb` is submitted.
     buffer record_read_back(resource_scope& sc, VkCommandBuffer cb, size_t i) const
@@ -286,6 +374,14 @@ private:
             barrier(cb, raws_.back(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, passes_.reader_stage());
         }
+        // The history's two images (the engine's, in a renderer), cleared: 0 frames held.
+        if (history_pass_ == no_pass) return;
+        const auto [w, h] = sizes_[history_pass_];
+        for (image& img : history_) {
+            img = scope_.make_image(w, h, image_format_of(codegen::history_format),
+                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+            clear_output(cb, img, 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
+        }
     }
 
     // `img` (in `from`) filled with `value` and left in SHADER_READ_ONLY_OPTIMAL.
@@ -368,17 +464,18 @@ private:
     {
         std::vector<VkDescriptorPoolSize> sizes;
         for (size_t i = 0; i < passes_.size(); ++i)
-            for (const codegen::resource& r : passes_[i].resources) {
-                const VkDescriptorType t = descriptor_type(r.kind);
-                auto it = std::find_if(sizes.begin(), sizes.end(), [t](const VkDescriptorPoolSize& p) { return p.type == t; });
-                if (it == sizes.end()) sizes.push_back({t, 1});
-                else ++it->descriptorCount;
-            }
-        return make_descriptor_pool(scope_, sizes, static_cast<uint32_t>(passes_.size()));
+            for (int copy = 0; copy < (i == history_pass_ ? 2 : 1); ++copy) // the history pass: a set per history image read
+                for (const codegen::resource& r : passes_[i].resources) {
+                    const VkDescriptorType t = descriptor_type(r.kind);
+                    auto it = std::find_if(sizes.begin(), sizes.end(), [t](const VkDescriptorPoolSize& p) { return p.type == t; });
+                    if (it == sizes.end()) sizes.push_back({t, 1});
+                    else ++it->descriptorCount;
+                }
+        return make_descriptor_pool(scope_, sizes, static_cast<uint32_t>(passes_.size() + (history_pass_ == no_pass ? 0 : 1)));
     }
 
     // The image and sampler a texture role of pass `i` reads.
-    VkDescriptorImageInfo sampled(const codegen::resource& r, size_t i, const gpu_gbuffer& g) const
+    VkDescriptorImageInfo sampled(const codegen::resource& r, size_t i, const gpu_gbuffer& g, int parity) const
     {
         const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
         switch (r.role) {
@@ -394,6 +491,12 @@ private:
                             "G-buffer with width × height × 4 albedo values, e.g. with_uniform_albedo, or -mb's one albedo)");
             return {clamp_, g.albedo().view, read};
         case resource_role::noise: return {repeat_, noise_.view, read};
+        case resource_role::history: return {clamp_, history_[parity].view, read};
+        case resource_role::motion:
+            if (!g.has_motion())
+                throw error("vulkan bound chain: " + passes_.name() + " reads motion vectors (-histmv), and the G-buffer has none (valid: a "
+                            "G-buffer with width × height × 2 motion values, or a -hist variant, which reprojects by the camera)");
+            return {clamp_, g.motion().view, read};
         case resource_role::ao_input:
             if (i > 0) return {clamp_, outputs_[i - 1].view, read};
             break;
@@ -403,62 +506,80 @@ private:
             break;
         default: break;
         }
-        throw error("vulkan bound chain: unknown sampled resource '" + r.name + "' (valid: depth, normals, noise, ao_input, depth_mips after a prefilter, albedo)");
+        throw error("vulkan bound chain: unknown sampled resource '" + r.name +
+                    "' (valid: depth, normals, noise, ao_input, depth_mips after a prefilter, albedo, history, motion)");
     }
 
     // A storage image of pass `i`: its output, or its raw values.
-    VkDescriptorImageInfo stored(const codegen::resource& r, size_t i) const
+    VkDescriptorImageInfo stored(const codegen::resource& r, size_t i, int parity) const
     {
         if (r.role == resource_role::output) return {VK_NULL_HANDLE, outputs_[i].view, VK_IMAGE_LAYOUT_GENERAL};
         if (r.role == resource_role::raw) return {VK_NULL_HANDLE, raws_[i].view, VK_IMAGE_LAYOUT_GENERAL};
-        throw error("vulkan bound chain: unknown storage image '" + r.name + "' (valid: output, raw)");
+        if (r.role == resource_role::history_output) return {VK_NULL_HANDLE, history_[parity ^ 1].view, VK_IMAGE_LAYOUT_GENERAL};
+        throw error("vulkan bound chain: unknown storage image '" + r.name + "' (valid: output, raw, history_output)");
     }
 
     // What descriptor `r` of pass `i` points at: WebGPU's separate textures and samplers
     // (binding_model::webgpu) take one half each of the combined descriptor.
-    VkDescriptorImageInfo image_info(const codegen::resource& r, size_t i, const gpu_gbuffer& g) const
+    // `parity`: which history image a history pass reads (it writes the other).
+    VkDescriptorImageInfo image_info(const codegen::resource& r, size_t i, const gpu_gbuffer& g, int parity) const
     {
-        VkDescriptorImageInfo info = r.kind == codegen::resource_kind::storage_image ? stored(r, i) : sampled(r, i, g);
+        VkDescriptorImageInfo info = r.kind == codegen::resource_kind::storage_image ? stored(r, i, parity) : sampled(r, i, g, parity);
         if (r.kind == codegen::resource_kind::sampled_image) info.sampler = VK_NULL_HANDLE;
         if (r.kind == codegen::resource_kind::sampler) info.imageView = VK_NULL_HANDLE, info.imageLayout = VK_IMAGE_LAYOUT_UNDEFINED;
         return info;
     }
 
-    // One descriptor set per pass, every binding of its resources written.
+    // One descriptor set per pass, every binding of its resources written; the history pass
+    // has two, one reading each history image (record() takes them by turns).
     void write_sets(const gpu_gbuffer& g)
     {
-        VkDevice d = ctx_.device();
-        const VkDescriptorPool pool = make_pass_pool();
-        sets_.resize(passes_.size());
-        for (size_t i = 0; i < passes_.size(); ++i) {
-            const pass_pipeline& p = passes_[i];
-            VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-            dai.descriptorPool = pool;
-            dai.descriptorSetCount = 1;
-            dai.pSetLayouts = &p.set_layout;
-            check(vkAllocateDescriptorSets(d, &dai, &sets_[i]), "vkAllocateDescriptorSets");
-            // Sized up front: the writes point into these vectors.
-            std::vector<VkDescriptorBufferInfo> bufs(p.resources.size());
-            std::vector<VkDescriptorImageInfo> imgs(p.resources.size());
-            std::vector<VkWriteDescriptorSet> writes;
-            for (size_t k = 0; k < p.resources.size(); ++k) {
-                const codegen::resource& r = p.resources[k];
-                VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-                w.dstSet = sets_[i];
-                w.dstBinding = r.binding;
-                w.descriptorCount = 1;
-                w.descriptorType = descriptor_type(r.kind);
-                if (r.kind == codegen::resource_kind::uniform_buffer) {
-                    bufs[k] = {uniforms_[i].first.handle, 0, uniforms_[i].second};
-                    w.pBufferInfo = &bufs[k];
-                } else {
-                    imgs[k] = image_info(r, i, g);
-                    w.pImageInfo = &imgs[k];
-                }
-                writes.push_back(w);
-            }
-            vkUpdateDescriptorSets(d, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+        if (sets_.empty()) {
+            const VkDescriptorPool pool = make_pass_pool();
+            for (size_t i = 0; i < passes_.size(); ++i) sets_.push_back(allocate_set(pool, i));
+            if (history_pass_ != no_pass) history_set_ = allocate_set(pool, history_pass_);
         }
+        for (size_t i = 0; i < passes_.size(); ++i) write_set(sets_[i], i, g, 0);
+        if (history_pass_ != no_pass) write_set(history_set_, history_pass_, g, 1);
+    }
+
+    VkDescriptorSet allocate_set(VkDescriptorPool pool, size_t i) const
+    {
+        VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+        dai.descriptorPool = pool;
+        dai.descriptorSetCount = 1;
+        dai.pSetLayouts = &passes_[i].set_layout;
+        VkDescriptorSet set;
+        check(vkAllocateDescriptorSets(ctx_.device(), &dai, &set), "vkAllocateDescriptorSets");
+        return set;
+    }
+
+    // Every binding of pass i's resources, in `set`.
+    void write_set(VkDescriptorSet set, size_t i, const gpu_gbuffer& g, int parity) const
+    {
+        VkDevice d = ctx_.device();
+        const pass_pipeline& p = passes_[i];
+        // Sized up front: the writes point into these vectors.
+        std::vector<VkDescriptorBufferInfo> bufs(p.resources.size());
+        std::vector<VkDescriptorImageInfo> imgs(p.resources.size());
+        std::vector<VkWriteDescriptorSet> writes;
+        for (size_t k = 0; k < p.resources.size(); ++k) {
+            const codegen::resource& r = p.resources[k];
+            VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+            w.dstSet = set;
+            w.dstBinding = r.binding;
+            w.descriptorCount = 1;
+            w.descriptorType = descriptor_type(r.kind);
+            if (r.kind == codegen::resource_kind::uniform_buffer) {
+                bufs[k] = {uniforms_[i].first.handle, 0, uniforms_[i].second};
+                w.pBufferInfo = &bufs[k];
+            } else {
+                imgs[k] = image_info(r, i, g, parity);
+                w.pImageInfo = &imgs[k];
+            }
+            writes.push_back(w);
+        }
+        vkUpdateDescriptorSets(d, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
     }
 
     context& ctx_;
@@ -473,6 +594,10 @@ private:
     std::vector<image> outputs_, raws_;
     std::vector<VkFramebuffer> framebuffers_;
     std::vector<VkDescriptorSet> sets_;
+    size_t history_pass_ = no_pass;  // the history pass's index, if the chain has one
+    image history_[2];               // its two history images: it reads history_[parity_], writes the other
+    VkDescriptorSet history_set_ = VK_NULL_HANDLE; // its set for parity 1 (sets_ holds parity 0's)
+    mutable int parity_ = 0;         // flipped by each record(): a frame
     mutable const raw_counter* counter_;
     mutable std::unique_ptr<raw_counter> own_counter_; // when no counter was given, made on the first count
 };

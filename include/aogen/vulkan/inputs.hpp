@@ -7,7 +7,8 @@
 //   gpu_gbuffer   that G-buffer uploaded into device-local images, once: depth as an
 //                 R32_SFLOAT colour image (any float, NaN included) or a D32_SFLOAT depth
 //                 image sampled through its depth aspect (values in [0, 1] only); normals
-//                 and albedo as R32G32B32A32_SFLOAT when the host G-buffer has them. Many bound chains
+//                 and albedo as R32G32B32A32_SFLOAT, motion vectors as R32G32_SFLOAT, when
+//                 the host G-buffer has them. Many bound chains
 //                 (bound_chain.hpp) may read one gpu_gbuffer: the report uploads each
 //                 scene's G-buffer once for every variant it runs.
 //   chain_inputs  the bytes a chain's passes read besides the G-buffer: each pass's uniform
@@ -73,6 +74,10 @@ public:
             albedo_ = scope_.upload(cb, g.width, g.height, VK_FORMAT_R32G32B32A32_SFLOAT, g.albedo.data(), g.albedo.size() * 4, readers, staging);
             has_albedo_ = true;
         }
+        if (!g.motion.empty()) {
+            motion_ = scope_.upload(cb, g.width, g.height, VK_FORMAT_R32G32_SFLOAT, g.motion.data(), g.motion.size() * 4, readers, staging);
+            has_motion_ = true;
+        }
         staging.submit(cb);
     }
 
@@ -84,6 +89,8 @@ public:
     const image& normals() const { return normals_; }
     bool has_albedo() const { return has_albedo_; }
     const image& albedo() const { return albedo_; }
+    bool has_motion() const { return has_motion_; }
+    const image& motion() const { return motion_; }
 
 private:
     static void check_host(const gbuffer& g, depth_format format)
@@ -97,6 +104,8 @@ private:
             throw error("vulkan gbuffer: normals of " + std::to_string(g.normals.size()) + " values (valid: width × height × 4, or none)");
         if (!g.albedo.empty() && g.albedo.size() != pixels * 4)
             throw error("vulkan gbuffer: albedo of " + std::to_string(g.albedo.size()) + " values (valid: width × height × 4, or none)");
+        if (!g.motion.empty() && g.motion.size() != pixels * 2)
+            throw error("vulkan gbuffer: motion vectors of " + std::to_string(g.motion.size()) + " values (valid: width × height × 2, or none)");
         names::require_listed(depth_format_names, format, "vulkan gbuffer depth format");
         // A copy into D32_SFLOAT of a value outside [0, 1] is undefined in Vulkan; say so instead.
         if (format == depth_format::d32_sfloat)
@@ -109,8 +118,8 @@ private:
     resource_scope scope_;
     int width_, height_;
     depth_format format_;
-    image depth_, normals_, albedo_;
-    bool has_normals_ = false, has_albedo_ = false;
+    image depth_, normals_, albedo_, motion_;
+    bool has_normals_ = false, has_albedo_ = false, has_motion_ = false;
 };
 
 } // namespace aogen::vulkan

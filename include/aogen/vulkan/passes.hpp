@@ -56,11 +56,16 @@ inline VkFormat image_format_of(const std::string& qualifier)
     if (qualifier == "r8") return VK_FORMAT_R8_UNORM;
     if (qualifier == "rgba8") return VK_FORMAT_R8G8B8A8_UNORM;
     if (qualifier == "r32f") return VK_FORMAT_R32_SFLOAT; // the prefilter's depth MIP atlas
-    throw error("vulkan: an output image in format " + qualifier + " (valid: r8, rgba8, the formats the harness reads back)");
+    if (qualifier == "rgba16f") return VK_FORMAT_R16G16B16A16_SFLOAT; // the history (codegen::history_format)
+    throw error("vulkan: an output image in format " + qualifier + " (valid: r8, rgba8, r32f, rgba16f: the formats the harness reads back)");
 }
 
 // Bytes per texel of the formats image_format_of makes.
-inline size_t texel_bytes(VkFormat f) { return f == VK_FORMAT_R8_UNORM ? 1 : 4; }
+inline size_t texel_bytes(VkFormat f)
+{
+    if (f == VK_FORMAT_R8_UNORM) return 1;
+    return f == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4;
+}
 
 struct pass_pipeline {
     pass_kind kind = pass_kind::ao;

@@ -216,14 +216,24 @@ public:
                  resource_scope& staging)
     {
         const image r = make_image(w, h, f, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-        const buffer source = staging.make_host_buffer(bytes, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        barrier(cb, r, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-        const VkBufferImageCopy c = copy_region(r, w, h);
-        vkCmdCopyBufferToImage(cb, source.handle, r.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &c);
-        barrier(cb, r, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, readers);
+        update_image(cb, r, w, h, bytes, size, VK_IMAGE_LAYOUT_UNDEFINED, readers, staging);
         return r;
+    }
+
+    // `bytes` (w × h texels, tightly packed rows, top row first) copied over the whole of
+    // `img` (made with TRANSFER_DST, now in layout `from`; UNDEFINED drops what it held)
+    // through a staging buffer of `staging`, left in SHADER_READ_ONLY_OPTIMAL for shaders of
+    // `readers`. Whatever used `img` before must have finished or be ordered by `cb`.
+    void update_image(VkCommandBuffer cb, const image& img, int w, int h, const void* bytes, size_t size, VkImageLayout from,
+                      VkPipelineStageFlags readers, resource_scope& staging)
+    {
+        const buffer source = staging.make_host_buffer(bytes, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        barrier(cb, img, from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const VkBufferImageCopy c = copy_region(img, w, h);
+        vkCmdCopyBufferToImage(cb, source.handle, img.handle, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &c);
+        barrier(cb, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, readers);
     }
 
     // Fills colour image `img`, now in layout `from` (UNDEFINED for a new one), with `value`

@@ -99,6 +99,13 @@ inline void write_feature_saving(std::ostream& md, const report_data& d)
     else md << feature_saving_about() << "\n\n" << markdown_table(feature_saving_table(d)) << "\n" << feature_saving_left_out(d) << "\n";
 }
 
+// The report in motion (motion.hpp).
+inline void write_motion(std::ostream& md, const report_data& d)
+{
+    if (d.motion.empty()) return;
+    md << "\n## In motion\n\n" << motion_about(d) << "\n\n" << markdown_table(motion_table(d)) << "\n" << markdown_table(motion_scenes_table(d));
+}
+
 // The runs that did not happen, grouped by why.
 inline void write_not_run(std::ostream& md, const report_data& d)
 {
@@ -119,6 +126,7 @@ inline std::string report_markdown(const report_data& d, const report_meta& meta
     detail::write_scenes(md, d, strips);
     detail::write_per_scene(md, d, strips);
     detail::write_feature_saving(md, d);
+    detail::write_motion(md, d);
     detail::write_not_run(md, d);
     return md.str();
 }

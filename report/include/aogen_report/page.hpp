@@ -324,6 +324,9 @@ inline std::string report_page(const report_data& d, const report_meta& meta, pa
         html << "<p>" << html_from_markdown(feature_saving_about()) << "</p>\n"
              << html_table(feature_saving_table(d)) << "<p>" << html_from_markdown(feature_saving_left_out(d)) << "</p>\n";
     html << "</section>\n";
+    if (!d.motion.empty())
+        html << "<section id=\"motion\">\n<h2>In motion</h2>\n<p>" << html_from_markdown(motion_about(d)) << "</p>\n" << html_table(motion_table(d))
+             << html_table(motion_scenes_table(d)) << "</section>\n";
     const std::vector<std::string> not_run = not_run_lines(d);
     if (!not_run.empty()) html << "<section id=\"not-run\">\n<h2>Not run</h2>\n" << html_list(not_run) << "</section>\n";
     html << "<script type=\"application/json\" id=\"aogen-data\">" << detail::page_data(d, images ? *images : own) << "</script>\n"

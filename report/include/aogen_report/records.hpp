@@ -18,6 +18,7 @@
 #include "calibrate.hpp"
 #include "images.hpp"
 #include "metrics.hpp"
+#include "motion_record.hpp"
 #include "reference.hpp"
 
 #include <aogen/vulkan/chain.hpp>
@@ -125,6 +126,7 @@ struct feature_saving {
 // (the program's scene_done) -- the final set's writing is the program's to add.
 struct phase_times {
     double compile = 0, trace = 0, score = 0, time = 0, summarise = 0, write = 0;
+    double motion = 0; // the report in motion: its frames' G-buffers, references and runs
     size_t runs = 0; // variant × scene runs scored (twins included)
 };
 
@@ -141,6 +143,8 @@ struct report_data {
     std::vector<variant_record> variants;
     std::vector<variant_record> twins;     // the point-cloud twins of the feature saving
     std::vector<feature_saving> savings;
+    motion_options motion_settings;        // what the report in motion ran
+    std::vector<motion_record> motion;     // per variant and scene with a path (motion.hpp); empty: not run
     phase_times phases;
 };
 

@@ -224,6 +224,91 @@ inline std::string feature_saving_left_out(const report_data& d)
     return text + ".";
 }
 
+// ---- In motion (motion.hpp) --------------------------------------------------------
+
+inline std::string motion_about(const report_data& d)
+{
+    const motion_options& o = d.motion_settings;
+    return "Each variant run as a renderer runs it along every scene that has a camera path (and moving objects): frame f's G-buffer "
+           "with its motion vectors, the frame index f, the previous frame's camera, one binding whose history pass keeps its history. "
+           "Frames " + std::to_string(o.first_scored) + " to " + std::to_string(o.frames - 1) + " are each scored against their own "
+           "reference (" + std::to_string(o.grid * o.grid) + " rays per pixel). *Error*: the mean of those frames' RMSEs. *Ghosting*: "
+           "the RMSE over pixels whose surface point came into view within the last " + std::to_string(o.ghost_window) + " frames (the "
+           "truth's disocclusion: a point moved back by its object's motion is in view a frame earlier when it lies on that frame's "
+           "screen and nothing hides it from that frame's eye). *Flicker*: the RMS of the frame-to-frame change of (AO − truth) at "
+           "one surface point, over the points in view in both frames. Means over the scenes; a twin is the variant without its "
+           "history pass.";
+}
+
+namespace detail {
+// The mean of `field` over the motion runs of `variant`.
+template <class F>
+double motion_mean(const report_data& d, const std::string& variant, F field)
+{
+    double sum = 0, n = 0;
+    for (const motion_record& r : d.motion)
+        if (r.variant == variant) sum += field(r), n += 1;
+    return n > 0 ? sum / n : std::nan("");
+}
+
+// The name of `variant` without its history extra ("" when it has none).
+inline std::string motion_twin_name(const std::string& variant)
+{
+    for (const char* extra : {"-histmv", "-hist"}) {
+        const size_t at = variant.find(extra);
+        if (at != std::string::npos) return variant.substr(0, at) + variant.substr(at + std::string(extra).size());
+    }
+    return "";
+}
+} // namespace detail
+
+// Per motion variant (in the order run): its means over the scenes, and beside a history
+// variant its twin's ratios.
+inline text_table motion_table(const report_data& d)
+{
+    using detail::fixed;
+    text_table t{{"variant", "error", "ghosting", "flicker", "error / twin's", "ghosting / twin's", "flicker / twin's"}, "lrrrrrr", {}};
+    std::vector<std::string> seen;
+    for (const motion_record& r : d.motion) {
+        if (std::find(seen.begin(), seen.end(), r.variant) != seen.end()) continue;
+        seen.push_back(r.variant);
+        auto mean = [&](const std::string& v, double motion_record::*field) { return detail::motion_mean(d, v, [&](const motion_record& m) { return m.*field; }); };
+        const std::string twin = detail::motion_twin_name(r.variant);
+        auto ratio = [&](double motion_record::*field) {
+            const double a = mean(r.variant, field), b = twin.empty() ? std::nan("") : mean(twin, field);
+            return std::isfinite(b) && b > 0 ? fixed(a / b, 2) : std::string("–");
+        };
+        t.rows.push_back({"`" + r.variant + "`", fixed(mean(r.variant, &motion_record::error), 4), fixed(mean(r.variant, &motion_record::ghosting), 4),
+                          fixed(mean(r.variant, &motion_record::flicker), 4), ratio(&motion_record::error), ratio(&motion_record::ghosting),
+                          ratio(&motion_record::flicker)});
+    }
+    return t;
+}
+
+// Per scene with a path: each variant's error / ghosting / flicker there.
+inline text_table motion_scenes_table(const report_data& d)
+{
+    using detail::fixed;
+    std::vector<std::string> scenes, variants;
+    for (const motion_record& r : d.motion) {
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+        if (std::find(variants.begin(), variants.end(), r.variant) == variants.end()) variants.push_back(r.variant);
+    }
+    text_table t{{"variant"}, "l", {}};
+    for (const std::string& s : scenes) t.head.push_back(s + ": error / ghosting / flicker"), t.align += "r";
+    for (const std::string& v : variants) {
+        std::vector<std::string> row{"`" + v + "`"};
+        for (const std::string& s : scenes) {
+            std::string cell = "–";
+            for (const motion_record& r : d.motion)
+                if (r.variant == v && r.scene == s) cell = fixed(r.error, 4) + " / " + fixed(r.ghosting, 4) + " / " + fixed(r.flicker, 4);
+            row.push_back(cell);
+        }
+        t.rows.push_back(row);
+    }
+    return t;
+}
+
 // The runs that did not happen, one line per reason: how many, and the first three.
 inline std::vector<std::string> not_run_lines(const report_data& d)
 {

@@ -7,7 +7,7 @@
 //   { "aogen_report": 2, "device", "command", "rays_per_pixel", "frames", "complete": bool,
 //     "timing": {rounds, iterations, warmup_ms, budget_ms, fetch_floor},   // iterations: the most per round
 //     "clocks": {max_sm_mhz, min, median, max, samples},        // SM MHz while timing (nvidia-smi)
-//     "phases_s": {compile, trace, score, time, summarise, write (the partial sets), runs},
+//     "phases_s": {compile, trace, score, time, summarise, write (the partial sets), motion, runs},
 //     "calibration": "...",
 //     "scenes":   [{name, width, height, ao_radius, valid_pixels, untrusted_pixels, truth_mean, truth_noise_rms, point_cloud, clocks,
 //                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
@@ -24,7 +24,9 @@
 //                             bent_normal: {mean_degrees, p90_degrees, missing, pixels}}]}],   // -bn variants only
 //     "feature_saving": [{selected, everything_on, selected_instructions, everything_on_instructions,
 //                         selected_ms, everything_on_ms, ratio, ratio_p10, ratio_p90,
-//                         selected_rmse, everything_on_rmse, left_out}] }
+//                         selected_rmse, everything_on_rmse, left_out}],
+//     "motion": {frames, first_scored, ghost_window, rays_per_pixel,     // the report in motion (motion.hpp)
+//                runs: [{variant, scene, error, ghosting, flicker, ghost_pixels, flicker_pixels, rmse: [per scored frame]}]} }
 // "raw" counts what each pass computed before its finite/range guard (diagnostics.hpp);
 // "non_finite" of the metrics counts the shipped output, which the guard keeps finite.
 #pragma once
@@ -118,6 +120,17 @@ inline nlohmann::json variant_json(const variant_record& v, const std::vector<sc
             {"scenes", per_scene}};
 }
 
+// The report in motion (motion.hpp): what ran, and per variant and scene its figures.
+inline nlohmann::json motion_json(const report_data& d)
+{
+    const motion_options& o = d.motion_settings;
+    nlohmann::json runs = nlohmann::json::array();
+    for (const motion_record& r : d.motion)
+        runs.push_back({{"variant", r.variant}, {"scene", r.scene}, {"error", r.error}, {"ghosting", r.ghosting}, {"flicker", r.flicker},
+                        {"ghost_pixels", r.ghost_pixels}, {"flicker_pixels", r.flicker_pixels}, {"rmse", r.rmse}});
+    return {{"frames", o.frames}, {"first_scored", o.first_scored}, {"ghost_window", o.ghost_window}, {"rays_per_pixel", o.grid * o.grid}, {"runs", runs}};
+}
+
 } // namespace detail
 
 inline std::string results_json(const report_data& d, const report_meta& meta)
@@ -134,7 +147,7 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
     j["clocks"] = detail::clocks_json(d.clocks);
     j["clocks"]["max_sm_mhz"] = detail::number(d.max_sm_mhz > 0 ? d.max_sm_mhz : std::nan(""));
     j["phases_s"] = {{"compile", d.phases.compile}, {"trace", d.phases.trace},         {"score", d.phases.score}, {"time", d.phases.time},
-                     {"summarise", d.phases.summarise}, {"write", d.phases.write}, {"runs", d.phases.runs}};
+                     {"summarise", d.phases.summarise}, {"write", d.phases.write}, {"motion", d.phases.motion}, {"runs", d.phases.runs}};
     j["calibration"] = "ao^p, p fitted on the other scenes (leave-one-out), least squares, each scene weighted equally";
     j["scenes"] = nlohmann::json::array();
     for (const scene_record& s : d.scenes)
@@ -168,6 +181,7 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                        {"selected_rmse", f.selected_rmse},
                                        {"everything_on_rmse", f.everything_on_rmse},
                                        {"left_out", f.left_out}});
+    j["motion"] = detail::motion_json(d);
     return j.dump(2) + "\n";
 }
 

@@ -48,6 +48,7 @@
 #include "clocks.hpp"
 #include "fetch_floor.hpp"
 #include "records.hpp"
+#include "motion.hpp"
 #include "scene_bench.hpp"
 #include "settings.hpp"
 #include "summary.hpp"
@@ -99,6 +100,10 @@ struct report_settings {
     bool fetch_floor = true;         // time each variant's fetch floor beside it
     bool feature_saving = true;      // run the point-cloud twins of SSAO variants
     size_t bound_bytes = size_t(2) << 30; // output images bound at once for timing, at most
+    // The report in motion (motion.hpp): these variants along every scene that has a path;
+    // none: not run.
+    std::vector<aogen::variant> motion_variants = default_motion_variants();
+    motion_options motion;
     aogen::vulkan::device_options device;
     std::function<void(const std::string&)> progress = [](const std::string&) {};
     std::function<void(const report_data&)> scene_done = [](const report_data&) {};
@@ -187,8 +192,9 @@ inline std::string why_not(const variant_record& r, const scene_record& s, bool 
 
 // Scores `c` on one scene: runs its diagnostic build once (the shipped one where there is
 // none), reads the AO back, counts raw values; then runs the shipped chain at frames
-// 1..frames-1 and scores the mean of all `frames` frames against the truth. The
-// single-frame metrics follow in finish_scoring().
+// 1..frames-1 and scores the mean of all `frames` frames against the truth -- or, for a chain
+// with a history pass, which accumulates the frames itself, its own output after frames
+// 0..frames-1 on one binding. The single-frame metrics follow in finish_scoring().
 inline run_record score(const compiled_variant& c, scene_bench& bench, int frames)
 {
     run_record r;
@@ -200,6 +206,10 @@ inline run_record score(const compiled_variant& c, scene_bench& bench, int frame
     if (!out.full_bent_normal.empty()) {
         r.bent = compare_bent_normals(out.full_bent_normal, bench.truth().bent_normal, bench.truth().valid);
         r.bent_normal_rgb = normal_bytes(out.full_bent_normal);
+    }
+    if (aogen::has_history_pass(chain.plan().variant())) {
+        r.accumulated = compare(bench.last_frame(*c.shipped, settings, uint32_t(frames)), bench.truth().ao, bench.truth().valid);
+        return r;
     }
     std::vector<double> sum(out.full.begin(), out.full.end());
     if (frames > 1) bench.add_frames(*c.shipped, settings, 1, uint32_t(frames - 1), sum); // bound once, frame after frame
@@ -407,6 +417,28 @@ inline scene_record record_of(const scene_bench& bench)
     return r;
 }
 
+namespace detail {
+
+// The report in motion: every motion variant along every scene with a path, at the report's
+// resolution; a variant a scene's renderer cannot run is left out of that scene.
+inline void run_motion(aogen::vulkan::context& ctx, const report_settings& settings, report_data& out)
+{
+    out.motion_settings = settings.motion;
+    std::vector<std::unique_ptr<aogen::vulkan::chain>> chains;
+    for (const aogen::variant& v : settings.motion_variants) chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, aogen::codegen::make_plan(v)));
+    for (const aogen::scenes::scene& asked : settings.scenes) {
+        if (aogen::scenes::frame_count(asked) < 2) continue;
+        settings.progress("in motion: " + asked.name + ", " + std::to_string(std::min(settings.motion.frames, aogen::scenes::frame_count(asked))) +
+                          " frames (" + std::to_string(settings.motion.grid * settings.motion.grid) + " rays per pixel from frame " +
+                          std::to_string(settings.motion.first_scored) + "), " + std::to_string(chains.size()) + " variants");
+        motion_scene m(ctx, sized(asked, settings), settings.motion);
+        for (const auto& c : chains)
+            if (cannot_run(c->plan().variant(), m.scene()).empty()) out.motion.push_back(m.score(*c));
+    }
+}
+
+} // namespace detail
+
 inline report_data run_report(const report_settings& settings)
 {
     using clock = std::chrono::steady_clock;
@@ -461,6 +493,11 @@ inline report_data run_report(const report_settings& settings)
         const auto write_start = clock::now();
         settings.scene_done(out);
         out.phases.write += detail::seconds_since(write_start);
+    }
+    if (!settings.motion_variants.empty()) {
+        const auto motion_start = clock::now();
+        detail::run_motion(ctx, settings, out);
+        out.phases.motion = detail::seconds_since(motion_start);
     }
     return out;
 }

@@ -102,6 +102,7 @@ private:
         o.use_scene_normals = false;
         o.normals = space;
         o.face_camera = false; // as the scene's renderer stores them (the reference's face the camera)
+        o.motion = true;       // a still frame's motion vectors, all 0: what a -histmv variant reads
         const aogen::scenes::gbuffer g = aogen::scenes::render_gbuffer(for_variant(scene_, v), tracer_, o);
         return cache_.emplace(key, entry_type{renderer_gbuffer(g), nullptr}).first->second;
     }
@@ -176,6 +177,23 @@ public:
             if (full.size() != sum.size()) aogen::fail("scene bench frames", "a sum of " + std::to_string(sum.size()) + " pixels", "valid: the screen's");
             for (size_t i = 0; i < sum.size(); ++i) sum[i] += full[i];
         }
+    }
+
+    // Frames 0 .. count − 1 of chain `c` with settings `s` on one binding, as a frame loop
+    // runs them -- a history pass keeps its history from frame to frame --, and the last
+    // frame's output upsampled to the screen (what a renderer shows after `count` frames).
+    std::vector<float> last_frame(const aogen::vulkan::chain& c, aogen::vulkan::chain_settings s, uint32_t count)
+    {
+        const aogen::codegen::plan& p = c.plan();
+        const aogen::variant& v = p.variant();
+        s.frame = 0;
+        aogen::vulkan::bound_chain bound(ctx_, c.passes(), gpu(v), p.inputs(s, width(), height()), c.counter());
+        aogen::vulkan::chain_result out;
+        for (uint32_t f = 0; f < count; ++f) {
+            if (f > 0) s.frame = f, bound.set_uniforms(p.inputs(s, width(), height()));
+            out = bound.run_once();
+        }
+        return upsample(out.ao, out.width, out.height, aogen::output_scale(v), width(), height());
     }
 
     // View-space directions (3 floats each) turned into world space by the inverse of

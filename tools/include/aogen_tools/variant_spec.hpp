@@ -116,7 +116,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
 {
     in.only_keys({"technique", "samples", "slices", "steps", "blur", "bilateral_depth", "normals", "point_cloud",
                   "depth", "projection", "resolution", "stage", "range_check", "output", "decisions", "precision", "upsample", "multi_bounce",
-                  "bent_normals"});
+                  "bent_normals", "history"});
     variant_matrix m;
     if (in.has("technique")) m.techniques = name_list(in, "technique", technique_names);
     require_axes_used(in, m.techniques);
@@ -138,6 +138,7 @@ inline variant_matrix matrix_from_json(const json_reader& in)
     if (in.has("upsample")) m.upsample = name_list(in, "upsample", upsample_mode_names);
     if (in.has("multi_bounce")) m.multi_bounce = name_list(in, "multi_bounce", multi_bounce_mode_names);
     if (in.has("bent_normals")) m.bent_normals = bool_list(in, "bent_normals", "on", "off");
+    if (in.has("history")) m.history = name_list(in, "history", history_mode_names);
     return m;
 }
 

@@ -1,0 +1,132 @@
+// aogen_report/motion_metrics.hpp — the figures of the report in motion (motion.hpp), from
+// frames already run: how long each pixel's surface point has been in view, and a variant's
+// error, ghosting and flicker along a path. No GPU here: the scenes' geometry and tracer only.
+//
+// WHAT
+//   previous_pixel(now, before, tracer, p, id)   where frame f's hit point p (on geometry
+//                          id) stood in frame f − 1: the previous frame's pixel it lands on,
+//                          or -1 when it was out of view (off that screen, or hidden from that
+//                          eye: a ray cast in frame f − 1's tracer)
+//   previous_pixels(now, g, before, tracer)      the same for every pixel of a G-buffer
+//   next_ages(ages, from)  each pixel's age -- frames its point has been in view -- after a
+//                          frame: its source's age + 1, or 0 where its point was not in view
+//   motion_metrics(frames, window)               error, ghosting and flicker of scored frames
+//                          (motion_record.hpp; motion.hpp says what each is)
+//
+// USAGE
+//     std::vector<int> ages(n, 0);                                      // frame 0: all new
+//     const std::vector<long> from = aogen_report::previous_pixels(now, g, before, *before_tracer);
+//     ages = aogen_report::next_ages(ages, from);
+//     aogen_report::motion_record r = aogen_report::motion_metrics(scored, 4);
+//
+// ERRORS
+//   aogen::error from compare() (metrics.hpp): a frame whose AO and truth differ in size.
+#pragma once
+
+#include "metrics.hpp"
+#include "motion_record.hpp"
+#include "reference.hpp"
+
+#include <aogen_scenes/gbuffer.hpp>
+#include <aogen_scenes/scene.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+namespace aogen_report {
+
+// ---------------------------------------------------------------------------------
+// Ages: how long each pixel's surface point has been in view (the truth's)
+// ---------------------------------------------------------------------------------
+
+// Where frame f's pixel `i` (its hit `position`, on geometry `id`) stood in frame f − 1: the
+// index of the previous frame's pixel it lands on, or -1 when it was out of view -- off that
+// frame's screen, or hidden from its eye by something of that frame's scene.
+inline long previous_pixel(const aogen::scenes::scene& now, const aogen::scenes::scene& before, const aogen::truth::scene& before_tracer,
+                           aogen::truth::vec3 position, int id)
+{
+    const aogen::truth::vec3 was = position - (aogen::scenes::detail::placement(now, id) - aogen::scenes::detail::placement(before, id));
+    const std::optional<aogen::scenes::ndc_point> ndc = aogen::scenes::project_ndc(before.camera, was);
+    if (!ndc || !(std::fabs(ndc->x) < 1.0 && std::fabs(ndc->y) < 1.0)) return -1;
+    const int w = before.camera.width, h = before.camera.height;
+    const int x = std::min(w - 1, int((ndc->x + 1.0) * 0.5 * w)), y = std::min(h - 1, int((1.0 - ndc->y) * 0.5 * h));
+    // Hidden: something lies on the view ray's segment from the eye (an orthographic camera's
+    // eye plane, straight above the point) to the point, short of the point by more than
+    // the lift a point on a surface needs (truth::surface_offset's scale).
+    aogen::scenes::dvec3 right, up, back;
+    before.camera.basis(right, up, back);
+    const aogen::truth::vec3 eye = before.camera.projection == aogen::scenes::projection_kind::orthographic
+                                       ? was + (-aogen::truth::dot(was - before.camera.eye, back)) * back
+                                       : before.camera.eye;
+    if (before_tracer.occluded(eye, was - eye, 0.0, 1.0 - 1e-4)) return -1;
+    return long(y) * w + x;
+}
+
+// Each pixel's source in the previous frame (previous_pixel; -1 on background and where the
+// point was out of view), for frame `now` of a path whose frame before is `before`.
+inline std::vector<long> previous_pixels(const aogen::scenes::scene& now, const aogen::scenes::gbuffer& g, const aogen::scenes::scene& before,
+                                         const aogen::truth::scene& before_tracer)
+{
+    std::vector<long> from(size_t(g.width) * g.height, -1);
+    for (size_t i = 0; i < from.size(); ++i)
+        if (g.hit[i])
+            from[i] = previous_pixel(now, before, before_tracer, {g.position[3 * i], g.position[3 * i + 1], g.position[3 * i + 2]}, g.geometry[i]);
+    return from;
+}
+
+// The ages after a frame whose pixels came from `from` (previous_pixels): a pixel whose
+// point was in view is one frame older than the pixel it came from, any other 0.
+inline std::vector<int> next_ages(const std::vector<int>& ages, const std::vector<long>& from)
+{
+    std::vector<int> out(from.size(), 0);
+    for (size_t i = 0; i < from.size(); ++i)
+        if (from[i] >= 0) out[i] = std::min(ages.at(size_t(from[i])) + 1, 1 << 20);
+    return out;
+}
+
+// ---------------------------------------------------------------------------------
+// The metrics, from frames already read back (screen-sized AO)
+// ---------------------------------------------------------------------------------
+
+// One scored frame: the variant's AO at the screen's size, the frame's truth, and where its
+// pixels came from and how old their points are.
+struct scored_frame {
+    std::vector<float> ao;
+    const reference* truth = nullptr;
+    std::vector<long> from; // previous_pixels of this frame
+    std::vector<int> ages;  // after this frame (next_ages)
+};
+
+// The metrics of `frames` (consecutive scored frames, the first one's predecessor not
+// among them), for a ghost window of `window` frames.
+inline motion_record motion_metrics(const std::vector<scored_frame>& frames, int window)
+{
+    motion_record r;
+    double ghost_squares = 0, flicker_squares = 0;
+    for (size_t f = 0; f < frames.size(); ++f) {
+        const scored_frame& s = frames[f];
+        const reference& t = *s.truth;
+        r.rmse.push_back(compare(s.ao, t.ao, t.valid).rmse);
+        for (size_t i = 0; i < s.ao.size(); ++i) {
+            if (!t.valid[i] || !std::isfinite(s.ao[i])) continue;
+            const double e = double(s.ao[i]) - t.ao[i];
+            if (s.ages[i] < window) ghost_squares += e * e, ++r.ghost_pixels;
+            if (f == 0 || s.from[i] < 0) continue;
+            const scored_frame& p = frames[f - 1];
+            const size_t j = size_t(s.from[i]);
+            if (!p.truth->valid[j] || !std::isfinite(p.ao[j])) continue;
+            const double d = e - (double(p.ao[j]) - p.truth->ao[j]);
+            flicker_squares += d * d, ++r.flicker_pixels;
+        }
+    }
+    double sum = 0;
+    for (double x : r.rmse) sum += x;
+    r.error = r.rmse.empty() ? 0 : sum / double(r.rmse.size());
+    r.ghosting = r.ghost_pixels ? std::sqrt(ghost_squares / double(r.ghost_pixels)) : 0;
+    r.flicker = r.flicker_pixels ? std::sqrt(flicker_squares / double(r.flicker_pixels)) : 0;
+    return r;
+}
+
+} // namespace aogen_report

@@ -1,0 +1,30 @@
+// aogen_report/motion_record.hpp — what the report in motion runs and what it keeps of each
+// run (motion.hpp runs it, motion_metrics.hpp works the figures out): plain values, no GPU and
+// no scene, so that records.hpp and the metrics' tests can hold them.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace aogen_report {
+
+// The report in motion (motion.hpp): what is run and scored along a scene's path.
+struct motion_options {
+    int frames = 16;       // frames run from the path's start (at most the path's)
+    int first_scored = 8;  // frames first_scored .. frames − 1 are traced and scored
+    int ghost_window = 4;  // a pixel whose point came into view within this many frames is a ghost pixel
+    int grid = 16;         // reference rays per pixel: grid × grid (256: docs/report.md § In motion says what it costs)
+};
+
+// One variant along one scene's path (motion.hpp).
+struct motion_record {
+    std::string variant, scene;
+    std::vector<double> rmse; // per scored frame, against that frame's truth
+    double error = 0;         // their mean
+    double ghosting = 0;      // RMSE over the young pixels of the scored frames
+    double flicker = 0;       // RMS frame-to-frame change of (AO − truth) at one point
+    size_t ghost_pixels = 0, flicker_pixels = 0;
+};
+
+} // namespace aogen_report

@@ -1,0 +1,179 @@
+// history.glsl -- the history pass (-hist, -histmv): this frame's filtered AO blended with the
+// chain's own AO of the frames before, as UE5's, HDRP's and three.js's GTAO do after their
+// spatial filter. At the AO target's resolution, after the blur, before the upsample.
+// Uniform block: HistoryUniforms (aogen/uniforms.hpp; history_params in aogen/params.hpp).
+//
+// Bindings (aogen/bindings.hpp's history family):
+//   AO_BINDING_DEPTH           this frame's depth, full resolution
+//   AO_BINDING_AO_INPUT        this frame's filtered AO (the blur's output; the AO pass's
+//                              without a blur), the AO target's size
+//   AO_BINDING_HISTORY         the previous frame's history: what AO_BINDING_HISTORY_OUTPUT
+//                              held after the previous frame (the engine swaps the two)
+//   AO_BINDING_HISTORY_OUTPUT  this frame's history, rgba16f, the AO target's size
+//   AO_BINDING_MOTION          (-histmv) the renderer's motion vectors, full resolution, .rg
+//   AO_BINDING_OUTPUT          the AO, as every filter pass writes it: what the upsample (or
+//                              the renderer) reads. The history is kept apart from it so that
+//                              the AO image keeps the chain's format and, at a reset, its
+//                              bytes are the blur's own.
+//
+// THE HISTORY TEXEL: .r the AO (before any multi-bounce: the output's finalize step is
+// applied to what is written to the output, never to what is kept); .g log2 of the view
+// depth of the surface the pixel saw (log2: 16-bit floats then hold every scale, from
+// micrometres to kilometres, to 2^-11 of a unit of log2 -- depth to 0.1 % and better); .b the
+// frames it holds, n (0: none -- a cleared history, background, a pixel just uncovered).
+//
+// THE STEPS, per target pixel p (it stands for full-resolution pixel P = ao_full_pixel(p)):
+// 1. Where was the surface point x at P a frame ago? Its view position x (this frame's
+//    inverse projection) moved rigidly into the previous view: x' = view_to_previous_view x.
+//    With the camera alone (-hist) the previous uv is x' projected by the previous
+//    projection; behind the previous camera (clip w <= 0) it was nowhere on screen. With
+//    motion vectors (-histmv) the previous uv is uv + motion_scale * m(P), whatever moved.
+//    Either way x' gives the depth x had then, -x'.z (exact for a static surface; for a moving
+//    one off by its own motion in depth along the view, which the tolerance takes).
+// 2. The history there: the 2 x 2 history texels around the previous uv, by their bilinear
+//    weights, each only if it is finite, holds a frame, and saw a depth within
+//    log2(1 + depth_tolerance) of log2 -x'.z (another surface's history -- a disocclusion --
+//    fails). None left (weight sum under 1 %): no history. A still camera lands on the texel
+//    itself (weights 1, 0, 0, 0), so its history is exactly the pixel's own.
+// 3. The clamp (history_params::clamp): the history held to this frame's neighbourhood of
+//    filtered AO -- +-range about the pixel (UE5), the 3 x 3 [min, max] widened (HDRP), or the
+//    3 x 3 mean +- gamma standard deviations (variance clipping).
+// 4. The blend: out = mix(history, this frame, w), w = max(blend, 1 / (n + 1)): the first
+//    frames of a history average evenly (a still camera's n-th frame is the mean of its n
+//    frames), later ones decay by 1 - blend per frame. n' = min(n + 1, 1024).
+// With `reset` (a camera cut, a resize, the first frame), no history, or background, the
+// pass writes this frame's AO as it read it -- the same bytes as the chain without the pass --
+// and a history of n' = 1 (background: n' = 0, AO 1).
+//
+// NUMERICS: every history texel is tested for finiteness before it is used, so a NaN or an
+// infinity planted in the history is dropped the frame it is read and never written back;
+// the AO written is a blend of finite values in [0, 1].
+
+#if !defined(AO_PASS_HISTORY)
+#error aogen: history.glsl is the history pass
+#endif
+#if (defined(AO_HISTORY_CAMERA) + defined(AO_HISTORY_MOTION_VECTORS)) != 1
+#error aogen: exactly one of AO_HISTORY_CAMERA, AO_HISTORY_MOTION_VECTORS must be defined
+#endif
+#if !defined(AO_STAGE_COMPUTE)
+#error aogen: the history pass writes two images and needs the compute stage
+#endif
+#if !defined(AO_BINDING_AO_INPUT) || !defined(AO_BINDING_HISTORY) || !defined(AO_BINDING_HISTORY_OUTPUT)
+#error aogen: AO_BINDING_AO_INPUT, AO_BINDING_HISTORY and AO_BINDING_HISTORY_OUTPUT are not defined (codegen writes the bindings)
+#endif
+#if defined(AO_HISTORY_MOTION_VECTORS) && !defined(AO_BINDING_MOTION)
+#error aogen: a -histmv pass reads motion vectors, and AO_BINDING_MOTION is not defined
+#endif
+
+// u_ao_input, u_history, u_history_output, u_motion: declared by aogen::codegen (aogen/bindings.hpp).
+
+// The most frames a history texel counts: enough for every blend (1 / 0.01 = 100), exact in 16 bits.
+const float AO_HISTORY_MAX_FRAMES = 1024.0;
+
+// The history's depth code of a view distance (THE HISTORY TEXEL).
+float ao_history_depth_code(float view_distance)
+{
+    return log2(view_distance);
+}
+
+// Step 1: the uv the surface point at full-resolution pixel `full` (raw depth `depth`) had in
+// the previous frame, and its depth code then; false when it was behind the previous camera
+// or the arithmetic left the finite numbers.
+bool ao_history_previous(ivec2 full, float depth, out vec2 previous_uv, out float expected)
+{
+    vec2 uv = ao_pixel_uv(full);
+    vec4 x = u.view_to_previous_view * vec4(ao_view_position(uv, depth), 1.0);
+    expected = ao_history_depth_code(-x.z);
+#if defined(AO_HISTORY_MOTION_VECTORS)
+    previous_uv = uv + u.motion_scale * texelFetch(u_motion, full, 0).rg;
+#else
+    vec4 clip = u.previous_proj * x;
+    previous_uv = vec2(0.0);
+    if (!(clip.w > 0.0)) return false; // behind the previous camera (NaN fails too)
+    vec2 ndc = clip.xy / clip.w;
+    previous_uv = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5); // ndc.y = 1 - 2 uv.y (common/depth.glsl)
+#endif
+    return -x.z > 0.0 && ao_is_finite(expected) && ao_is_finite(previous_uv.x) && ao_is_finite(previous_uv.y);
+}
+
+// Step 2: (AO, frames) of the history at `previous_uv` for a surface of depth code `expected`;
+// frames 0 when no texel of the 2 x 2 around it is this surface's.
+vec2 ao_history_fetch(vec2 previous_uv, float expected)
+{
+    ivec2 size = textureSize(u_history, 0);
+    // The target pixel a uv stands for, continuously: full-resolution pixel centre P + 0.5 is
+    // uv * size, and target pixel p stands for P = p (full) or 2 p (half).
+    vec2 t = previous_uv * vec2(ao_depth_size()) - 0.5;
+#if defined(AO_HALF_RESOLUTION)
+    t *= 0.5;
+#endif
+    vec2 base = floor(t);
+    vec2 f = t - base;
+    ivec2 i0 = ivec2(base);
+    float weight = 0.0, ao = 0.0, frames = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 o = ivec2(k & 1, k >> 1);
+        ivec2 q = i0 + o;
+        if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
+        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        vec4 h = texelFetch(u_history, q, 0);
+        bool usable = ao_is_finite(h.r) && ao_is_finite(h.g) && h.b >= 1.0 && h.b <= AO_HISTORY_MAX_FRAMES;
+        if (!(w > 0.0) || !usable || !(abs(h.g - expected) <= u.depth_tolerance)) continue;
+        weight += w;
+        ao += w * clamp(h.r, 0.0, 1.0);
+        frames += w * h.b;
+    }
+    if (!(weight >= 0.01)) return vec2(0.0);
+    return vec2(ao / weight, frames / weight);
+}
+
+// Step 3: the interval the history is clamped to, for this frame's AO `c` at target pixel `p`.
+vec2 ao_history_bounds(ivec2 p, float c)
+{
+    int kind = u.clamp_kind; // history_clamp: 0 none, 1 range, 2 min_max, 3 variance
+    if (kind == 0) return vec2(0.0, 1.0);
+    if (kind == 1) return vec2(c - u.clamp_width, c + u.clamp_width);
+    ivec2 size = max(textureSize(u_ao_input, 0), ivec2(1));
+    float lo = c, hi = c, sum = 0.0, sum_squares = 0.0, count = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = p + ivec2(dx, dy);
+            if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
+            float a = ao_value_ao(ao_read_input(q));
+            lo = min(lo, a), hi = max(hi, a);
+            sum += a, sum_squares += a * a, count += 1.0;
+        }
+    }
+    if (kind == 2) return vec2(lo - u.clamp_width, hi + u.clamp_width);
+    float mean = sum / count;
+    float deviation = sqrt(max(sum_squares / count - mean * mean, 0.0));
+    return vec2(mean - u.clamp_width * deviation, mean + u.clamp_width * deviation);
+}
+
+ao_value ao_pass(ivec2 p)
+{
+    ivec2 full = ao_full_pixel(p);
+    float depth = ao_load_depth(full);
+    if (ao_is_background(depth)) {
+        imageStore(u_history_output, p, vec4(1.0, 0.0, 0.0, 0.0));
+        return ao_open_value();
+    }
+    ao_value current = ao_read_input(p);
+    float c = ao_value_ao(current);
+    float result = c, frames = 1.0;
+    vec2 previous_uv;
+    float expected;
+    bool same_size = all(equal(textureSize(u_history, 0), ao_target_size()));
+    if (u.reset < 0.5 && same_size && ao_history_previous(full, depth, previous_uv, expected)) {
+        vec2 history = ao_history_fetch(previous_uv, expected);
+        if (history.y >= 1.0) {
+            vec2 bounds = ao_history_bounds(p, c);
+            float held = clamp(history.x, bounds.x, bounds.y);
+            result = mix(held, c, max(u.blend, 1.0 / (history.y + 1.0)));
+            frames = min(history.y + 1.0, AO_HISTORY_MAX_FRAMES);
+        }
+    }
+    float own = ao_history_depth_code(-ao_view_z(ao_pixel_uv(full), depth));
+    imageStore(u_history_output, p, ao_is_finite(own) ? vec4(result, own, frames, 0.0) : vec4(result, 0.0, 0.0, 0.0));
+    return ao_make_value(result, ao_value_bent(current));
+}
