@@ -66,6 +66,28 @@ inline const char* verification(compile::target t, const variant& v)
     return compile::to_name(v.fp16 ? row.checked_fp16 : row.checked);
 }
 
+// What an engine must keep for a history variant (-hist, -histmv): the two history images,
+// their format and size, which binding reads and which writes, what a frame, a cut and a
+// resize do (docs/bindings.md says the same).
+inline nlohmann::ordered_json history_entry(const variant& v)
+{
+    const auto at = [](resource_role r) { return binding_of(pass_family::history, r, binding_model::vulkan); };
+    const auto at_webgpu = [](resource_role r) { return binding_of(pass_family::history, r, binding_model::webgpu); };
+    nlohmann::ordered_json h;
+    h["format"] = codegen::history_format;
+    h["channels"] = ".r AO, .g log2 of the view depth, .b frames held (0: none)";
+    h["size"] = "the AO target's: the screen's, or half of it rounded up at half resolution";
+    h["read"] = {{"name", "u_history"}, {"binding", at(resource_role::history)}, {"wgsl_binding", at_webgpu(resource_role::history)}};
+    h["written"] = {{"name", "u_history_output"}, {"binding", at(resource_role::history_output)}, {"wgsl_binding", at_webgpu(resource_role::history_output)}};
+    if (v.history == history_mode::motion_vectors)
+        h["motion_vectors"] = {{"name", "u_motion"}, {"binding", at(resource_role::motion)}, {"wgsl_binding", at_webgpu(resource_role::motion)},
+                               {"convention", "history_params::motion (default: NDC, current minus previous, y up)"}};
+    h["each_frame"] = "bind the image written last frame as u_history and the other as u_history_output, run the chain, swap the two";
+    h["first_frame_and_resize"] = "two new images cleared to 0 (a cleared history holds no frame: the pass writes this frame alone)";
+    h["camera_cut"] = "HistoryUniforms.reset = 1 (chain_settings::reset_history) for one frame: the output is the chain's without the pass, bit for bit";
+    return h;
+}
+
 class variant_generator {
 public:
     std::vector<compile::target> targets;
@@ -95,6 +117,7 @@ public:
         nlohmann::ordered_json verified;
         for (compile::target t : targets) verified[compile::to_name(t)] = verification(t, v);
         entry["verification"] = verified;
+        if (has_history_pass(v)) entry["history"] = history_entry(v);
 
         std::string ns_body;
         std::vector<std::string> declared_structs;

@@ -2,7 +2,8 @@
 //
 //     aogen_report [--scenes crease,room,my_scene.json] [--variants spec.json | NAME,NAME]
 //                  [--size 320x180] [--rays 1024] [--frames 8] [--rounds 3] [--iterations 20] [--budget-ms 1000] [--warmup-ms 500]
-//                  [--motion-variants spec.json | NAME,NAME | none] [--device NAME] [--out out/report]
+//                  [--motion-variants spec.json | NAME,NAME | none] [--history blend=0.1,clamp=variance,...]
+//                  [--device NAME] [--out out/report]
 //
 // Writes into --out: report.html (the whole report as one self-contained page: the plot,
 // a sortable, filterable table, every variant's images on every scene), report.md (the
@@ -188,8 +189,9 @@ int main(int argc, char** argv)
     int frames = aogen_report::report_settings{}.frames;
     aogen::vulkan::timing_options timing = aogen_report::report_settings{}.timing;
     bool validation = false, no_saving = false, no_floor = false;
-    std::string motion_variants;
-    app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene)")
+    std::string motion_variants, history;
+    app.add_option("--scenes", scenes, "built-in scene names or scene .json files, comma-separated (default: every built-in scene; "
+                                       "rolling_sphere in motion only); those with a camera path also run in motion")
         ->check(aogen::tools::not_empty("scene names or files"));
     app.add_option("--variants", variants, "a variant spec .json (as aogen generate --variants) or names, comma-separated (default: the default matrix)")
         ->check(aogen::tools::not_empty("a spec file or variant names"));
@@ -215,6 +217,9 @@ int main(int argc, char** argv)
                    "the variants run in motion along every scene with a camera path: a spec .json or names, comma-separated, or none "
                    "(default: the default variant and cheap GTAO chains, each with and without the history pass, and gtao-4x4-half-noblur)")
         ->check(aogen::tools::not_empty("a spec file, variant names or none"));
+    app.add_option("--history", history, "the history pass's settings over its defaults, key=value comma-separated: blend, clamp "
+                                         "(none, range, min_max, variance), range, widening, gamma, depth_tolerance (aogen/params.hpp's history_params)")
+        ->check(aogen::tools::not_empty("key=value settings"));
     std::string suite, cases;
     bool check = false;
     app.add_option("--suite", suite, "run a suite instead of the error-against-time report: stability")
@@ -242,7 +247,7 @@ int main(int argc, char** argv)
     try {
         // Options that belong to the other mode are refused, not ignored.
         const std::vector<std::string> report_only{"--scenes", "--size", "--frames", "--rounds", "--iterations", "--budget-ms", "--warmup-ms",
-                                                   "--no-feature-saving", "--no-fetch-floor", "--motion-variants"};
+                                                   "--no-feature-saving", "--no-fetch-floor", "--motion-variants", "--history"};
         for (const std::string& o : report_only)
             if (!suite.empty() && app.count(o) > 0)
                 aogen::fail(o, "is an option of the error-against-time report, not of --suite " + suite, "valid: leave it out with --suite");
@@ -261,7 +266,9 @@ int main(int argc, char** argv)
         s.feature_saving = !no_saving;
         s.fetch_floor = !no_floor;
         s.scenes = load_scenes(scenes);
+        s.motion_scenes = aogen_report::load_motion_scenes(scenes);
         s.variants = load_variants(variants);
+        if (app.count("--history")) s.history = aogen_report::parse_history(history);
         if (app.count("--motion-variants")) s.motion_variants = motion_variants == "none" ? std::vector<aogen::variant>{} : load_variants(motion_variants);
         s.progress = progress;
         const std::filesystem::path folder(out);

@@ -30,17 +30,26 @@
 //    motion vectors (-histmv) the previous uv is uv + motion_scale * m(P), whatever moved.
 //    Either way x' gives the depth x had then, -x'.z (exact for a static surface; for a moving
 //    one off by its own motion in depth along the view, which the tolerance takes).
-// 2. The history there: the 2 x 2 history texels around the previous uv, by their bilinear
-//    weights, each only if it is finite, holds a frame, and saw a depth within
-//    log2(1 + depth_tolerance) of log2 -x'.z (another surface's history -- a disocclusion --
-//    fails). None left (weight sum under 1 %): no history. A still camera lands on the texel
-//    itself (weights 1, 0, 0, 0), so its history is exactly the pixel's own.
+// 2. The history there. A texel counts by how far it can stand for this point: 0 when it is not
+//    finite or holds no frame; else by its depth against log2 -x'.z -- 1 within half of
+//    log2(1 + depth_tolerance), 0 past all of it (another surface's history: a disocclusion),
+//    linear between. The bilinear read of the 2 x 2 texels about the previous uv, each by its
+//    bilinear weight times its count, is mixed toward the Catmull-Rom read of the 4 x 4 about
+//    it by the least count of those 16: Catmull-Rom reproduces quadratics, so the history does
+//    not blur a little more each frame the camera moves, as a bilinear read makes it
+//    (measured: a lower error in motion, BENCHMARKS.md). The history is trusted as far as the
+//    bilinear weights' sum reaches 0.5 (its confidence): a sliver of the footprint as little as
+//    it covers. Every one of these is continuous in the inputs -- a band, never a step --
+//    so a depth or a position one ulp apart on two compilers moves the output by about as
+//    much. A still camera lands on the texel itself (weights 0, 1, 0, 0 each way), so its
+//    history is exactly the pixel's own.
 // 3. The clamp (history_params::clamp): the history held to this frame's neighbourhood of
 //    filtered AO -- +-range about the pixel (UE5), the 3 x 3 [min, max] widened (HDRP), or the
 //    3 x 3 mean +- gamma standard deviations (variance clipping).
 // 4. The blend: out = mix(history, this frame, w), w = max(blend, 1 / (n + 1)): the first
 //    frames of a history average evenly (a still camera's n-th frame is the mean of its n
-//    frames), later ones decay by 1 - blend per frame. n' = min(n + 1, 1024).
+//    frames), later ones decay by 1 - blend per frame; then mixed toward this frame as far as
+//    the history is not trusted. n' = min(1 + n * confidence, 1024).
 // With `reset` (a camera cut, a resize, the first frame), no history, or background, the
 // pass writes this frame's AO as it read it -- the same bytes as the chain without the pass --
 // and a history of n' = 1 (background: n' = 0, AO 1).
@@ -96,11 +105,36 @@ bool ao_history_previous(ivec2 full, float depth, out vec2 previous_uv, out floa
     return -x.z > 0.0 && ao_is_finite(expected) && ao_is_finite(previous_uv.x) && ao_is_finite(previous_uv.y);
 }
 
-// Step 2: (AO, frames) of the history at `previous_uv` for a surface of depth code `expected`;
-// frames 0 when no texel of the 2 x 2 around it is this surface's.
-vec2 ao_history_fetch(vec2 previous_uv, float expected)
+// How far history texel `h` can stand for a surface of depth code `expected`: 0 when it is not
+// finite or holds no frame; else by its depth, 1 within half the tolerance, 0 past it, and
+// linear between -- a band, not a step, so that a depth one ulp apart on two compilers of the
+// same text (GLSL's and SPIR-V's front ends) moves the output by about an ulp, never by a
+// texel taken or dropped.
+float ao_history_weight(vec4 h, float expected)
 {
-    ivec2 size = textureSize(u_history, 0);
+    bool finite = ao_is_finite(h.r) && ao_is_finite(h.g) && h.b >= 1.0 && h.b <= AO_HISTORY_MAX_FRAMES;
+    if (!finite) return 0.0;
+    return clamp(2.0 - 2.0 * abs(h.g - expected) / u.depth_tolerance, 0.0, 1.0);
+}
+
+// Catmull-Rom's four weights for taps at -1, 0, 1, 2 about a point `f` (in [0, 1)) past tap 0.
+vec4 ao_catmull_rom(float f)
+{
+    return vec4(f * (-0.5 + f * (1.0 - 0.5 * f)), 1.0 + f * f * (-2.5 + 1.5 * f), f * (0.5 + f * (2.0 - 1.5 * f)), f * f * (-0.5 + 0.5 * f));
+}
+
+// Step 2: (AO, frames, confidence) of the history at `previous_uv` for a surface of depth code
+// `expected`: the bilinear read of the 2 x 2 texels about it, each by its bilinear weight times
+// ao_history_weight, mixed toward the Catmull-Rom read of the 4 x 4 about it by the least
+// weight of those 16 (all 1: Catmull-Rom alone; one texel another surface's: bilinear alone).
+// Confidence: the bilinear weights' sum over 0.5, at most 1 -- half the footprint is enough, a
+// sliver of it trusted as little as it covers; a bilinear texel off the image weighs 0, so a
+// point leaving the previous screen fades out of its history. Catmull-Rom's taps are clamped
+// to the image, so its read does not jump where the point nears an edge. (Its negative lobes
+// may take the AO past [0, 1]: it is clamped.)
+vec3 ao_history_fetch(vec2 previous_uv, float expected)
+{
+    ivec2 last = textureSize(u_history, 0) - 1;
     // The target pixel a uv stands for, continuously: full-resolution pixel centre P + 0.5 is
     // uv * size, and target pixel p stands for P = p (full) or 2 p (half).
     vec2 t = previous_uv * vec2(ao_depth_size()) - 0.5;
@@ -114,17 +148,29 @@ vec2 ao_history_fetch(vec2 previous_uv, float expected)
     for (int k = 0; k < 4; ++k) {
         ivec2 o = ivec2(k & 1, k >> 1);
         ivec2 q = i0 + o;
-        if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
-        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, last))) continue; // off the image: its weight fades to 0 there
         vec4 h = texelFetch(u_history, q, 0);
-        bool usable = ao_is_finite(h.r) && ao_is_finite(h.g) && h.b >= 1.0 && h.b <= AO_HISTORY_MAX_FRAMES;
-        if (!(w > 0.0) || !usable || !(abs(h.g - expected) <= u.depth_tolerance)) continue;
+        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y) * ao_history_weight(h, expected);
+        if (!(w > 0.0)) continue;
         weight += w;
         ao += w * clamp(h.r, 0.0, 1.0);
         frames += w * h.b;
     }
-    if (!(weight >= 0.01)) return vec2(0.0);
-    return vec2(ao / weight, frames / weight);
+    if (!(weight > 1e-6)) return vec3(0.0);
+    ao /= weight, frames /= weight;
+    // Catmull-Rom over the 4 x 4, as far as all of them are this surface's: a bilinear read
+    // blurs the history a little every frame it moves, and the blur adds up.
+    vec4 wx = ao_catmull_rom(f.x), wy = ao_catmull_rom(f.y);
+    float sharp = 0.0, share = 1.0;
+    for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) {
+            vec4 h = texelFetch(u_history, clamp(i0 + ivec2(i - 1, j - 1), ivec2(0), last), 0);
+            share = min(share, ao_history_weight(h, expected));
+            if (share > 0.0) sharp += wx[i] * wy[j] * h.r; // finite: a texel that is not has weight 0
+        }
+    }
+    if (share > 0.0) ao = mix(ao, clamp(sharp, 0.0, 1.0), share);
+    return vec3(ao, frames, min(weight * 2.0, 1.0));
 }
 
 // Step 3: the interval the history is clamped to, for this frame's AO `c` at target pixel `p`.
@@ -165,12 +211,13 @@ ao_value ao_pass(ivec2 p)
     float expected;
     bool same_size = all(equal(textureSize(u_history, 0), ao_target_size()));
     if (u.reset < 0.5 && same_size && ao_history_previous(full, depth, previous_uv, expected)) {
-        vec2 history = ao_history_fetch(previous_uv, expected);
-        if (history.y >= 1.0) {
+        vec3 history = ao_history_fetch(previous_uv, expected);
+        if (history.z > 0.0) {
             vec2 bounds = ao_history_bounds(p, c);
             float held = clamp(history.x, bounds.x, bounds.y);
-            result = mix(held, c, max(u.blend, 1.0 / (history.y + 1.0)));
-            frames = min(history.y + 1.0, AO_HISTORY_MAX_FRAMES);
+            // Step 4, as far as the history is trusted (its confidence: 1 but at an edge).
+            result = mix(c, mix(held, c, max(u.blend, 1.0 / (history.y + 1.0))), history.z);
+            frames = min(1.0 + history.y * history.z, AO_HISTORY_MAX_FRAMES);
         }
     }
     float own = ao_history_depth_code(-ao_view_z(ao_pixel_uv(full), depth));

@@ -164,13 +164,21 @@ async function toSpirv() {
 
 // chain.txt, one line each:
 //   gbuffer W H            depth.f32 (W×H floats, r32float) and, if present, normals.f32 (W×H×4)
+//                          and motion.f32 (W×H×2, rg32float: a -histmv variant's motion vectors)
 //   noise N                noise.f32 (N×N×4 floats, rgba32float)
+//   frames F               the chain runs F frames (default 1): pass i reads uniforms<i>.bin at
+//                          frame 0 and uniforms<i>_<f>.bin at frame f; frame f's last output is
+//                          written to out<f>.bin and texels<f>.bin (frame 0's also to out.bin, texels.bin)
 //   pass FILE W H PPI [VERTEX]  a pass: its WGSL (a compute shader, or with VERTEX the fragment
 //                          shader drawn with that vertex shader's fullscreen triangle), its
 //                          output's size, pixels per invocation; uniforms<i>.bin its uniform
 //                          bytes (i from 0); it reads the previous pass's output as ao_input
 //   albedo BINDING         the pass above also reads albedo.f32 (the G-buffer's W×H×4 floats,
 //                          rgba32float) at BINDING (a -mbg variant's last pass)
+//   history READ WRITE     the pass above is a history pass: it reads the history at binding
+//                          READ and writes the next at WRITE (two rgba16float textures of its
+//                          output's size, cleared, swapped after every frame)
+//   motion BINDING         the pass above reads motion.f32 at BINDING
 // Bindings follow aogen/bindings.hpp's webgpu model; workgroups are the WGSL's @workgroup_size.
 // Compute passes write rgba8unorm storage textures, fragment passes r8unorm render targets.
 async function runChain() {
@@ -193,7 +201,8 @@ async function runChain() {
         device.queue.writeTexture({ texture: t }, data, { bytesPerRow: w * bpp }, [w, h]);
         return t;
     };
-    let depth, normals, albedo, noise;
+    let depth, normals, albedo, motion, noise;
+    let frames = 1;
     const passes = [];
     for (const l of lines) {
         if (l[0] === "gbuffer") {
@@ -201,18 +210,25 @@ async function runChain() {
             depth = upload(w, h, "r32float", floats("depth.f32"), 4);
             if (existsSync(join(dir, "normals.f32"))) normals = upload(w, h, "rgba32float", floats("normals.f32"), 16);
             if (existsSync(join(dir, "albedo.f32"))) albedo = upload(w, h, "rgba32float", floats("albedo.f32"), 16);
+            if (existsSync(join(dir, "motion.f32"))) motion = upload(w, h, "rg32float", floats("motion.f32"), 8);
         } else if (l[0] === "noise") {
             noise = upload(+l[1], +l[1], "rgba32float", floats("noise.f32"), 16);
+        } else if (l[0] === "frames") {
+            frames = +l[1];
         } else if (l[0] === "pass") {
             passes.push({ file: l[1], w: +l[2], h: +l[3], ppi: +l[4], vertex: l[5] });
         } else if (l[0] === "albedo") {
             passes[passes.length - 1].albedoBinding = +l[1];
+        } else if (l[0] === "history") {
+            passes[passes.length - 1].history = [+l[1], +l[2]];
+        } else if (l[0] === "motion") {
+            passes[passes.length - 1].motionBinding = +l[1];
         }
     }
     const sampler = device.createSampler({ addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
     const text = (file) => readFileSync(join(dir, file), "utf8");
     device.pushErrorScope("validation");
-    const encoder = device.createCommandEncoder();
+    // Each pass's output, layout, pipeline and uniform buffer, made once for every frame.
     let previous;
     passes.forEach((p, i) => {
         const code = text(p.file);
@@ -224,62 +240,84 @@ async function runChain() {
         const ubo = { buffer: { type: "uniform" } }, out = { storageTexture: { access: "write-only", format } };
         const ao = i === 0;
         // Bindings 0..4 as bindings.hpp's webgpu model lays them out; 5, the storage output, for compute.
-        const roles = ao ? [[0, ubo], [1, tex, depth], [2, smp, sampler], ...(normals ? [[3, tex, normals]] : []), [4, tex, noise]]
-                         : [[0, ubo], [1, tex, depth], [2, smp, sampler], [3, tex, previous], [4, smp, sampler]];
-        const output = device.createTexture({
+        p.roles = ao ? [[0, ubo], [1, tex, depth], [2, smp, sampler], ...(normals ? [[3, tex, normals]] : []), [4, tex, noise]]
+                     : [[0, ubo], [1, tex, depth], [2, smp, sampler], [3, tex, previous], [4, smp, sampler]];
+        p.output = device.createTexture({
             size: [p.w, p.h], format,
             usage: (fragment ? usage.RENDER_ATTACHMENT : usage.STORAGE_BINDING) | usage.TEXTURE_BINDING | usage.COPY_SRC,
         });
-        if (!fragment) roles.push([5, out, output]);
-        if (p.albedoBinding !== undefined) roles.push([p.albedoBinding, tex, albedo]);
-        const layout = device.createBindGroupLayout({ entries: roles.map(([binding, kind]) => entry(binding, kind)) });
-        const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
+        if (!fragment) p.roles.push([5, out, p.output]);
+        if (p.albedoBinding !== undefined) p.roles.push([p.albedoBinding, tex, albedo]);
+        if (p.motionBinding !== undefined) p.roles.push([p.motionBinding, tex, motion]);
+        if (p.history) {
+            // Two rgba16float images, cleared (0 frames held); frame f reads images[f % 2].
+            p.images = [0, 1].map(() => device.createTexture({ size: [p.w, p.h], format: "rgba16float", usage: usage.STORAGE_BINDING | usage.TEXTURE_BINDING }));
+            p.roles.push([p.history[0], tex, null], [p.history[1], { storageTexture: { access: "write-only", format: "rgba16float" } }, null]);
+        }
+        p.layout = device.createBindGroupLayout({ entries: p.roles.map(([binding, kind]) => entry(binding, kind)) });
+        const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
         const bytes = readFileSync(join(dir, `uniforms${i}.bin`));
-        const buffer = device.createBuffer({ size: Math.max(16, Math.ceil(bytes.length / 16) * 16), usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-        device.queue.writeBuffer(buffer, 0, bytes);
-        const resource = (binding, r) => (binding === 0 ? { buffer } : r instanceof GPUSampler ? r : r.createView());
-        const group = device.createBindGroup({ layout, entries: roles.map(([binding, , r]) => ({ binding, resource: resource(binding, r) })) });
+        p.buffer = device.createBuffer({ size: Math.max(16, Math.ceil(bytes.length / 16) * 16), usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
         if (fragment) {
-            const pipeline = device.createRenderPipeline({
+            p.pipeline = device.createRenderPipeline({
                 layout: pipelineLayout,
                 vertex: { module: device.createShaderModule({ code: text(p.vertex) }), entryPoint: "main" },
                 fragment: { module: device.createShaderModule({ code }), entryPoint: "main", targets: [{ format }] },
                 primitive: { topology: "triangle-list" },
             });
-            const pass = encoder.beginRenderPass({ colorAttachments: [{ view: output.createView(), loadOp: "clear", clearValue: [0, 0, 0, 0], storeOp: "store" }] });
-            pass.setPipeline(pipeline);
-            pass.setBindGroup(0, group);
-            pass.setViewport(0, 0, p.w, p.h, 0, 1);
-            pass.draw(3);
-            pass.end();
         } else {
-            const pipeline = device.createComputePipeline({ layout: pipelineLayout, compute: { module: device.createShaderModule({ code }), entryPoint: "main" } });
-            const size = /@workgroup_size\((\d+), (\d+)/.exec(code);
-            const pass = encoder.beginComputePass();
-            pass.setPipeline(pipeline);
-            pass.setBindGroup(0, group);
-            pass.dispatchWorkgroups(Math.ceil(p.w / p.ppi / +size[1]), Math.ceil(p.h / p.ppi / +size[2]));
-            pass.end();
+            p.pipeline = device.createComputePipeline({ layout: pipelineLayout, compute: { module: device.createShaderModule({ code }), entryPoint: "main" } });
+            p.groupSize = /@workgroup_size\((\d+), (\d+)/.exec(code);
         }
-        previous = output;
-        p.output = output;
+        previous = p.output;
         p.texel = fragment ? 1 : 4;
     });
     const last = passes[passes.length - 1];
     const rowBytes = Math.ceil((last.w * last.texel) / 256) * 256;
-    const read = device.createBuffer({ size: rowBytes * last.h, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
-    encoder.copyTextureToBuffer({ texture: last.output }, { buffer: read, bytesPerRow: rowBytes }, [last.w, last.h]);
-    device.queue.submit([encoder.finish()]);
-    const error = await device.popErrorScope();
-    if (error) throw new Error(error.message.trim());
-    await read.mapAsync(GPUMapMode.READ);
-    const texels = new Uint8Array(read.getMappedRange());
-    const r = new Uint8Array(last.w * last.h);
-    for (let y = 0; y < last.h; ++y) for (let x = 0; x < last.w; ++x) r[y * last.w + x] = texels[y * rowBytes + last.texel * x];
-    writeFileSync(join(dir, "out.bin"), r);
-    const packed = new Uint8Array(last.w * last.h * last.texel);
-    for (let y = 0; y < last.h; ++y) packed.set(texels.subarray(y * rowBytes, y * rowBytes + last.w * last.texel), y * last.w * last.texel);
-    writeFileSync(join(dir, "texels.bin"), packed);
+    for (let f = 0; f < frames; ++f) {
+        const encoder = device.createCommandEncoder();
+        passes.forEach((p, i) => {
+            device.queue.writeBuffer(p.buffer, 0, readFileSync(join(dir, f === 0 ? `uniforms${i}.bin` : `uniforms${i}_${f}.bin`)));
+            const resource = (binding, r) => {
+                if (binding === 0) return { buffer: p.buffer };
+                if (p.history && binding === p.history[0]) return p.images[f % 2].createView();
+                if (p.history && binding === p.history[1]) return p.images[(f + 1) % 2].createView();
+                return r instanceof GPUSampler ? r : r.createView();
+            };
+            const group = device.createBindGroup({ layout: p.layout, entries: p.roles.map(([binding, , r]) => ({ binding, resource: resource(binding, r) })) });
+            if (p.vertex !== undefined) {
+                const pass = encoder.beginRenderPass({ colorAttachments: [{ view: p.output.createView(), loadOp: "clear", clearValue: [0, 0, 0, 0], storeOp: "store" }] });
+                pass.setPipeline(p.pipeline);
+                pass.setBindGroup(0, group);
+                pass.setViewport(0, 0, p.w, p.h, 0, 1);
+                pass.draw(3);
+                pass.end();
+            } else {
+                const pass = encoder.beginComputePass();
+                pass.setPipeline(p.pipeline);
+                pass.setBindGroup(0, group);
+                pass.dispatchWorkgroups(Math.ceil(p.w / p.ppi / +p.groupSize[1]), Math.ceil(p.h / p.ppi / +p.groupSize[2]));
+                pass.end();
+            }
+        });
+        const read = device.createBuffer({ size: rowBytes * last.h, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+        encoder.copyTextureToBuffer({ texture: last.output }, { buffer: read, bytesPerRow: rowBytes }, [last.w, last.h]);
+        device.queue.submit([encoder.finish()]);
+        const error = await device.popErrorScope(); // each frame's validation, before its results are read
+        if (error) throw new Error(error.message.trim());
+        device.pushErrorScope("validation");
+        await read.mapAsync(GPUMapMode.READ);
+        const texels = new Uint8Array(read.getMappedRange());
+        const r = new Uint8Array(last.w * last.h);
+        for (let y = 0; y < last.h; ++y) for (let x = 0; x < last.w; ++x) r[y * last.w + x] = texels[y * rowBytes + last.texel * x];
+        const packed = new Uint8Array(last.w * last.h * last.texel);
+        for (let y = 0; y < last.h; ++y) packed.set(texels.subarray(y * rowBytes, y * rowBytes + last.w * last.texel), y * last.w * last.texel);
+        writeFileSync(join(dir, `out${f}.bin`), r);
+        writeFileSync(join(dir, `texels${f}.bin`), packed);
+        if (f === 0) writeFileSync(join(dir, "out.bin"), r), writeFileSync(join(dir, "texels.bin"), packed);
+        read.unmap();
+    }
+    await device.popErrorScope();
     writeFileSync(join(dir, "device.txt"), `Dawn ${adapter.info.backendType || "opengles"}: ${adapter.info.description}`);
 }
 

@@ -568,16 +568,22 @@ struct history_params {
     // the plain mean of its n frames, the mean the report's accumulated figure scores -- and
     // from n = 1 / blend - 1 on, each frame's share decays by (1 - blend) per frame: an
     // exponential window of about 2 / blend - 1 frames. 1 keeps no history.
-    // Default 0.1: UE5's AmbientOcclusionTemporalBlendWeight and three.js's alpha; HDRP's
-    // feedback 0.85..0.95 is 0.05..0.15 here. To be chosen by the error in motion.
+    // Default 0.2 (ours), chosen by the error in motion (aogen_history_sweep, BENCHMARKS.md
+    // § 2026-12-07 (session 7)): against 0.05 and 0.1 -- UE5's AmbientOcclusionTemporalBlendWeight
+    // and three.js's alpha are 0.1, HDRP's feedback 0.85..0.95 is 0.05..0.15 here -- 0.2 had
+    // the lowest error in motion for every clamp, with and without a spatial filter before it.
     static constexpr float_range blend_range{0.01f, 1.0f, false};
-    float blend = 0.1f;
+    float blend = 0.2f;
 
     // The clamp (history_clamp), and its width for each kind; only the clamp's own is read.
-    history_clamp clamp = history_clamp::variance;
+    // Default: range, ±0.2 (ours; UE5's clamp at twice its width), chosen by the error in
+    // motion against no clamp, ranges of 0.05 and 0.1, HDRP's min/max (widened by 0 and 0.05)
+    // and variance clipping at γ = 1, 1.5 and 2: ±0.1 and ±0.2 tie for the lowest mean error
+    // of gtao-2x2-half-denoise and -noblur with the pass, and ±0.2 flickers less.
+    history_clamp clamp = history_clamp::range;
     // range: the history stays within this of the pixel's AO. UE5: 0.1.
     static constexpr float_range range_range{0.0f, 1.0f, false};
-    float range = 0.1f;
+    float range = 0.2f;
     // min_max: added to both ends of the neighbourhood's [min, max]. HDRP widens by motion; 0 (ours) is the plain box.
     static constexpr float_range min_max_widening_range{0.0f, 1.0f, false};
     float min_max_widening = 0.0f;

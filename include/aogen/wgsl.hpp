@@ -264,11 +264,15 @@ struct dawn_pass {
     std::string vertex_wgsl; // empty for a compute pass
     int width = 0, height = 0;
     int pixels_per_invocation = 1;
-    std::vector<uint8_t> uniforms;
+    std::vector<std::vector<uint8_t>> uniforms; // per frame (run_on_dawn runs as many frames as these)
     int albedo_binding = -1; // -1: the pass reads no albedo
+    // A history pass (-hist, -histmv): where it reads the history and writes the next (two
+    // rgba16float images of its output's size, cleared, swapped after each frame); -1: none.
+    int history_binding = -1, history_output_binding = -1;
+    int motion_binding = -1; // -1: the pass reads no motion vectors
 };
 
-// The result of run_on_dawn: the last pass's output (.r, one byte a pixel, row-major), its
+// The result of run_on_dawn per frame: the last pass's output (.r, one byte a pixel, row-major), its
 // whole texels (4 bytes each for compute passes' rgba8unorm, 1 for fragment passes' r8unorm)
 // and the device Dawn ran it on.
 struct dawn_result {
@@ -280,31 +284,48 @@ struct dawn_result {
 // Executes a chain's WGSL on a real WebGPU implementation: Dawn (npm webgpu) on its
 // OpenGL ES backend, Tint's GLSL ES on Mesa's llvmpipe (EGL surfaceless) — Dawn refuses
 // lavapipe as a Vulkan device. Inputs as aogen::gbuffer and chain_inputs hold them: depth
-// (W×H floats), normals and albedo (W×H×4 floats each, or none), the noise tile (N×N RGBA32F
-// bytes). Bindings are the webgpu model's (bindings.hpp). An aogen::error with Dawn's message
-// when it fails.
-inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& depth, const std::vector<float>& normals,
-                               const std::vector<float>& albedo, int noise_size, const std::vector<uint8_t>& noise,
-                               const std::vector<dawn_pass>& passes, const tools& t = find_tools())
+// (W×H floats), normals and albedo (W×H×4 floats each, or none), motion vectors (W×H×2, or
+// none), the noise tile (N×N RGBA32F bytes). Bindings are the webgpu model's (bindings.hpp).
+// Runs as many frames as the passes have uniform blocks, one after the other on one device (a
+// history pass's history kept from frame to frame), and returns every frame's output. An
+// aogen::error with Dawn's message when it fails.
+inline std::vector<dawn_result> run_on_dawn(int width, int height, const std::vector<float>& depth, const std::vector<float>& normals,
+                                            const std::vector<float>& albedo, const std::vector<float>& motion, int noise_size,
+                                            const std::vector<uint8_t>& noise, const std::vector<dawn_pass>& passes, const tools& t = find_tools())
 {
     detail::scratch s;
     const auto floats = [](const std::vector<float>& f) { return std::string(reinterpret_cast<const char*>(f.data()), f.size() * sizeof(float)); };
-    std::string chain = "gbuffer " + std::to_string(width) + " " + std::to_string(height) + "\nnoise " + std::to_string(noise_size) + "\n";
+    const size_t frames = passes.empty() ? 0 : passes.front().uniforms.size();
+    if (frames == 0) fail("wgsl on dawn", "no frame to run", "valid: each pass's uniforms for at least one frame");
+    std::string chain = "gbuffer " + std::to_string(width) + " " + std::to_string(height) + "\nnoise " + std::to_string(noise_size) + "\nframes " +
+                        std::to_string(frames) + "\n";
     detail::write_all(s.file("depth.f32"), floats(depth));
     if (!normals.empty()) detail::write_all(s.file("normals.f32"), floats(normals));
     if (!albedo.empty()) detail::write_all(s.file("albedo.f32"), floats(albedo));
+    if (!motion.empty()) detail::write_all(s.file("motion.f32"), floats(motion));
     detail::write_all(s.file("noise.f32"), std::string(noise.begin(), noise.end()));
     for (size_t i = 0; i < passes.size(); ++i) {
         const std::string file = "pass" + std::to_string(i) + ".wgsl";
         detail::write_all(s.file(file), passes[i].wgsl);
         const std::string vertex = passes[i].vertex_wgsl.empty() ? "" : "pass" + std::to_string(i) + ".vert.wgsl";
         if (!vertex.empty()) detail::write_all(s.file(vertex), passes[i].vertex_wgsl);
-        detail::write_all(s.file("uniforms" + std::to_string(i) + ".bin"), std::string(passes[i].uniforms.begin(), passes[i].uniforms.end()));
+        if (passes[i].uniforms.size() != frames)
+            fail("wgsl on dawn", "pass " + std::to_string(i) + " has uniforms for " + std::to_string(passes[i].uniforms.size()) + " frames",
+                 "valid: every pass the same number, " + std::to_string(frames));
+        for (size_t f = 0; f < frames; ++f)
+            detail::write_all(s.file("uniforms" + std::to_string(i) + (f == 0 ? "" : "_" + std::to_string(f)) + ".bin"),
+                              std::string(passes[i].uniforms[f].begin(), passes[i].uniforms[f].end()));
         chain += "pass " + file + " " + std::to_string(passes[i].width) + " " + std::to_string(passes[i].height) + " " +
                  std::to_string(passes[i].pixels_per_invocation) + (vertex.empty() ? "" : " " + vertex) + "\n";
         if (passes[i].albedo_binding >= 0) {
             if (albedo.empty()) fail("wgsl on dawn", "pass " + std::to_string(i) + " reads the albedo G-buffer, and none was given", "valid: W×H×4 albedo floats");
             chain += "albedo " + std::to_string(passes[i].albedo_binding) + "\n";
+        }
+        if (passes[i].history_binding >= 0)
+            chain += "history " + std::to_string(passes[i].history_binding) + " " + std::to_string(passes[i].history_output_binding) + "\n";
+        if (passes[i].motion_binding >= 0) {
+            if (motion.empty()) fail("wgsl on dawn", "pass " + std::to_string(i) + " reads motion vectors, and none were given", "valid: W×H×2 motion floats");
+            chain += "motion " + std::to_string(passes[i].motion_binding) + "\n";
         }
     }
     detail::write_all(s.file("chain.txt"), chain);
@@ -314,8 +335,12 @@ inline dawn_result run_on_dawn(int width, int height, const std::vector<float>& 
         while (!message.empty() && message.back() == '\n') message.pop_back();
         fail("wgsl on dawn", message, "valid: a chain Dawn's OpenGL ES backend runs");
     }
-    const std::string ao = detail::read_all(s.file("out.bin")), texels = detail::read_all(s.file("texels.bin"));
-    return {std::vector<uint8_t>(ao.begin(), ao.end()), std::vector<uint8_t>(texels.begin(), texels.end()), detail::read_all(s.file("device.txt"))};
+    std::vector<dawn_result> out;
+    for (size_t f = 0; f < frames; ++f) {
+        const std::string ao = detail::read_all(s.file("out" + std::to_string(f) + ".bin")), texels = detail::read_all(s.file("texels" + std::to_string(f) + ".bin"));
+        out.push_back({std::vector<uint8_t>(ao.begin(), ao.end()), std::vector<uint8_t>(texels.begin(), texels.end()), detail::read_all(s.file("device.txt"))});
+    }
+    return out;
 }
 
 } // namespace aogen::wgsl

@@ -122,3 +122,50 @@ TEST_CASE("gl: the emitted ESSL 310 (compute) and 300 (fragment) give the SPIR-V
     rgba8.output_format = "rgba8";
     compare_with_spirv(gl::api::opengl_es, compile::target::essl, rgba8);
 }
+
+// A history variant's frames, each with its own camera and frame index on one G-buffer (the
+// report's crease, with motion vectors of a sideways move): on OpenGL from the emitted text,
+// its two history images swapped frame after frame (gl::run_frames), against the SPIR-V on one
+// Vulkan binding frame after frame. Every frame's every pixel bit for bit, and the history is
+// used: most texels of the history hold every frame.
+TEST_CASE("gl: a history variant's frames (GLSL 450 and ESSL 310) give the SPIR-V's, frame after frame, bit for bit")
+{
+    vulkan::context* vk = shared_context();
+    if (!vk) return;
+    const scenes::scene scene = [] {
+        scenes::scene s = scenes::builtin_scene("crease");
+        s.camera.width = 160, s.camera.height = 90;
+        return s;
+    }();
+    const std::unique_ptr<truth::scene> tracer = scenes::make_tracer(scene);
+    scenes::gbuffer_options go;
+    go.use_scene_normals = false, go.face_camera = false, go.motion = true;
+    vulkan::gbuffer g = scenes::to_gbuffer<vulkan::gbuffer>(scenes::render_gbuffer(scene, *tracer, go));
+    for (size_t i = 0; i < g.motion.size(); i += 2) g.motion[i] = -0.01f, g.motion[i + 1] = 0.004f; // NDC, current − previous
+    for (const auto& [api, target] : {std::pair{gl::api::opengl, compile::target::glsl}, std::pair{gl::api::opengl_es, compile::target::essl}}) {
+        gl::context* gl = shared_gl(api);
+        if (!gl) return;
+        codegen::options o;
+        if (api == gl::api::opengl_es) o.output_format = "rgba8"; // ESSL 310 has no r8 image format
+        for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv", "ssao-s16-full-bilateral-gbufworld-std-persp-cs-hist"}) {
+            INFO(compile::to_name(target) << " " << name);
+            const variant v = variant_from_name(name);
+            const codegen::plan p = codegen::make_plan(v, under_test(o));
+            const std::vector<chain_inputs> frames = sideways_frames(p, aogen_report::default_settings(v, scene), g.width, g.height, 4);
+            const std::vector<gl::chain_result> got = gl::run_frames(*gl, plan_for(p, target), emitted_texts(p, target), g, frames);
+            std::vector<float> history;
+            const std::vector<vulkan::chain_result> expected = spirv_frames(*vk, chain_under_test(*vk, v), g, frames, &history);
+            for (size_t f = 0; f < frames.size(); ++f) {
+                INFO("frame " << f);
+                REQUIRE(got[f].ao.size() == expected[f].ao.size());
+                const ao_difference d = difference_of(got[f].ao, expected[f].ao);
+                std::cout << "history frame " << f << ": " << d.identical << " of " << d.pixels << " pixels bit-identical, largest difference "
+                          << d.largest * 255 << "/255\n";
+                CHECK(first_difference(got[f].ao, expected[f].ao) == "");
+            }
+            const auto [held, surface] = held_of(history, float(frames.size()));
+            CHECK(held * 2 > surface); // the history was used: most surface texels hold every frame
+        }
+    }
+    require_clean(*vk);
+}

@@ -64,8 +64,10 @@ TEST_CASE("motion: error, ghosting and flicker of two hand-made frames are their
 {
     // Pixel 2 is background (not valid). Frame 0: errors +0.1, -0.1; frame 1: +0.05, 0.
     const reference t0 = truth_of({0.5f, 0.5f, 1.0f}, {1, 1, 0}), t1 = truth_of({0.5f, 0.5f, 1.0f}, {1, 1, 0});
-    std::vector<scored_frame> frames{{{0.6f, 0.4f, 1.0f}, &t0, {-1, -1, -1}, {5, 1, 0}},
-                                     {{0.55f, 0.5f, 1.0f}, &t1, {1, 0, -1}, {6, 0, 0}}}; // frame 1's pixels came from the other one
+    // Frame 1's pixel 0 came from pixel 1's centre, pixel 1 from pixel 0's (a row of 3 pixels).
+    const std::vector<int> ids{0, 0, -1};
+    std::vector<scored_frame> frames{{{0.6f, 0.4f, 1.0f}, &t0, {{}, {}, {}}, {5, 1, 0}, ids, 3},
+                                     {{0.55f, 0.5f, 1.0f}, &t1, {{1, 1.5, 0.5}, {0, 0.5, 0.5}, {}}, {6, 0, 0}, ids, 3}};
     const motion_record r = motion_metrics(frames, 4);
     REQUIRE(r.rmse.size() == 2);
     CHECK(r.rmse[0] == Approx(0.1).epsilon(1e-6));
@@ -77,6 +79,14 @@ TEST_CASE("motion: error, ghosting and flicker of two hand-made frames are their
     // Frame 1 against frame 0 at one point: 0.05 - (-0.1) and 0 - 0.1.
     CHECK(r.flicker_pixels == 2);
     CHECK(r.flicker == Approx(std::sqrt((0.15 * 0.15 + 0.1 * 0.1) / 2)).epsilon(1e-5));
+    // Between two pixel centres the frame before's error is their bilinear mean: frame 1's
+    // pixel 0 came from x = 0.75, a quarter of the way from pixel 0's centre to pixel 1's
+    // (0.75 * 0.1 + 0.25 * -0.1 = 0.05); pixel 1 from a pixel of another object only: no figure.
+    frames[1].from = {{0, 0.75, 0.5}, {0, 0.5, 0.5}, {}};
+    frames[1].geometry = {0, 7, -1};
+    const motion_record between = motion_metrics(frames, 4);
+    CHECK(between.flicker_pixels == 1);
+    CHECK(between.flicker == Approx(std::fabs(0.05 - 0.05)).margin(1e-6));
 }
 
 TEST_CASE("motion: along a strafe of one pixel a frame, column x is min(f, W - 1 - x) frames old, and standing still every pixel is f")

@@ -144,6 +144,10 @@ errors)
   expect_error "unknown variant" 'ssao-s9000' --variants ssao-s9000-half-box-gbufworld-std-persp-cs
   expect_error "bad size" "--size: '320by180' is not a size \\(valid: WIDTHxHEIGHT" --size 320by180
   expect_error "too few rays" '--rays: 100 is not a valid ray count \(valid: the square of an even number' --rays 100
+  expect_error "history blend out of range" '--history.blend: 2 is out of range \(valid: ' --history blend=2
+  expect_error "unknown history setting" "--history: 'sharpness' is not a setting of the history pass \(valid: blend, clamp, " --history sharpness=1
+  expect_error "unknown history clamp" '--history clamp: .box. is not' --history clamp=box
+  expect_error "unknown motion variant" 'ssao-s9000' --motion-variants ssao-s9000-half-box-gbufworld-std-persp-cs
   echo '{"geometry": [' >"$work/broken.json"
   expect_error "malformed scene" 'broken.json: is not valid JSON' --scenes "$work/broken.json"
   expect_error "unknown stability case" "built-in stability case: 'fov_1000' is not known \\(valid: grazing_floor, " --suite stability --cases fov_1000

@@ -224,6 +224,47 @@ inline std::string first_difference(const std::vector<float>& a, const std::vect
     return "";
 }
 
+// `count` frames of settings `still` with the camera moving sideways 0.02 a frame (each frame's
+// previous camera the frame before's; frame 0's its own), each frame its own index: plan `p`'s
+// inputs for a w × h G-buffer -- what a history variant's runners are compared on.
+inline std::vector<chain_inputs> sideways_frames(const codegen::plan& p, const vulkan::chain_settings& still, int w, int h, uint32_t count)
+{
+    std::vector<chain_inputs> frames;
+    for (uint32_t f = 0; f < count; ++f) {
+        vulkan::chain_settings s = still;
+        s.frame = f;
+        s.camera.world_to_view.columns[3].x -= 0.02f * float(f);
+        s.previous_camera = still.camera;
+        s.previous_camera->world_to_view.columns[3].x -= 0.02f * float(f > 0 ? f - 1 : 0);
+        frames.push_back(p.inputs(s, w, h));
+    }
+    return frames;
+}
+
+// Chain `c`'s frames of `frames` on one Vulkan binding to `g`, frame after frame (a history
+// kept), each read back; and into `history`, when given, the history after the last.
+inline std::vector<vulkan::chain_result> spirv_frames(vulkan::context& ctx, const vulkan::chain& c, const vulkan::gbuffer& g,
+                                                      const std::vector<chain_inputs>& frames, std::vector<float>* history = nullptr)
+{
+    const vulkan::gpu_gbuffer uploaded(ctx, g);
+    vulkan::bound_chain b(ctx, c.passes(), uploaded, frames.at(0));
+    std::vector<vulkan::chain_result> out;
+    for (size_t f = 0; f < frames.size(); ++f) {
+        if (f > 0) b.set_uniforms(frames[f]);
+        out.push_back(b.run_once());
+    }
+    if (history) *history = b.read_history();
+    return out;
+}
+
+// How many surface texels of a history hold `frames` frames, and how many hold any.
+inline std::pair<size_t, size_t> held_of(const std::vector<float>& history, float frames)
+{
+    size_t held = 0, surface = 0;
+    for (size_t i = 2; i < history.size(); i += 4) held += history[i] == frames, surface += history[i] > 0.0f;
+    return {held, surface};
+}
+
 inline void require_clean(vulkan::context& ctx)
 {
     const std::vector<std::string> m = ctx.messages();

@@ -15,6 +15,8 @@
 // vectors.
 #include "harness.hpp"
 
+#include <aogen/half.hpp>
+
 #include <cmath>
 #include <limits>
 
@@ -134,6 +136,7 @@ TEST_CASE("vulkan: history: with a still camera and no clamp, the history of n f
         const vulkan::chain with = chain_under_test(*ctx, v), twin = chain_under_test(*ctx, twin_of(v));
         vulkan::chain_settings s = settings_for(proj);
         s.history.clamp = history_clamp::none;
+        s.history.blend = 0.1f; // 1 / (n + 1) > 0.1 for the 8 frames: they weigh evenly
         vulkan::bound_chain b(*ctx, with.passes(), g, with.plan().inputs(s, W, H));
         std::vector<double> sum;
         for (uint32_t f = 0; f < 8; ++f) {
@@ -239,7 +242,41 @@ TEST_CASE("vulkan: history: a camera that moves one target texel reads the histo
     require_clean(*ctx);
 }
 
-TEST_CASE("vulkan: history: a history texel of another surface (its depth past the tolerance) is not read, one within it is")
+TEST_CASE("vulkan: history: half a texel over, a quadratic history is read exactly (Catmull-Rom), where a bilinear read is off by a quarter of its curvature")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    constexpr int W = 64, H = 40, TW = W / 2, TH = H / 2;
+    constexpr float Z = 5.0f;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gpu_gbuffer g(*ctx, full_facing_plane(W, H, proj, Z));
+    // The camera half a target texel to the right: texel x reads the history at x + 0.5.
+    const float tx = (2.0f / W) * Z / proj[0][0];
+    // h(x) = ((x - 16) / 16)^2, as the 16-bit history holds it.
+    auto h = [](int x) { return half_to_float(float_to_half(float((x - 16) * (x - 16)) / 256.0f)); };
+    vulkan::chain_settings s = settings_for(proj);
+    s.camera = moved_camera(proj, {tx, 0, 0});
+    s.previous_camera = moved_camera(proj, {0, 0, 0});
+    s.history.clamp = history_clamp::none;
+    const vulkan::chain c = chain_under_test(*ctx, variant_from_name("gtao-2x2-half-noblur-gbufworld-std-persp-cs-nearest-hist"));
+    vulkan::bound_chain b(*ctx, c.passes(), g, c.plan().inputs(s, W, H));
+    b.load_history(TW, TH, planted_history(TW, TH, Z, 3.0f, [&](int x, int) { return h(x); }));
+    b.run_once();
+    const std::vector<float> history = b.read_history();
+    double worst = 0;
+    for (int y = 1; y + 2 < TH; ++y)
+        for (int x = 1; x + 2 < TW; ++x) { // the 4 x 4 texels about x + 0.5 all on the screen
+            // Catmull-Rom at the midpoint: (-h(x-1) + 9 h(x) + 9 h(x+1) - h(x+2)) / 16, exactly h(x + 0.5) for a quadratic.
+            const double read = (-h(x - 1) + 9.0 * h(x) + 9.0 * h(x + 1) - h(x + 2)) / 16.0;
+            const double expected = 0.75 * read + 0.25;
+            worst = std::max(worst, std::fabs(history[4 * pixel(TW, x, y)] - expected));
+        }
+    INFO("off the Catmull-Rom read by at most " << worst << " (a bilinear read: 0.75 / 1024 = 7.3e-4 off)");
+    CHECK(worst <= 3e-4); // 16-bit rounding of values up to 1
+    require_clean(*ctx);
+}
+
+TEST_CASE("vulkan: history: a history texel of another surface (its depth past the tolerance) is not read, one within half of it is, and one between in part")
 {
     vulkan::context* ctx = shared_context();
     if (!ctx) return;
@@ -250,18 +287,25 @@ TEST_CASE("vulkan: history: a history texel of another surface (its depth past t
     vulkan::chain_settings s = settings_for(proj);
     s.history.clamp = history_clamp::none;
     s.history.depth_tolerance = 0.05f;
-    for (const float seen : {5.0f * 0.97f, 5.0f * 1.04f, 5.0f * 1.06f, 5.0f * 0.9f, 5.0f * 2.0f}) {
-        INFO("the history saw depth " << seen);
-        const bool same_surface = std::fabs(seen / 5.0f - 1.0f) < 0.05f;
+    // The count of a texel that saw depth `seen`: 1 within half the tolerance (in log2), 0 past it.
+    const double tolerance = std::log2(1.05);
+    for (const float seen : {5.0f * 0.99f, 5.0f * 1.015f, 5.0f * 1.04f, 5.0f * 1.06f, 5.0f * 0.9f, 5.0f * 2.0f}) {
+        const double off = std::fabs(double(half_to_float(float_to_half(std::log2(seen)))) - std::log2(5.0)); // the history holds 16 bits
+        const double count = std::clamp(2.0 - 2.0 * off / tolerance, 0.0, 1.0), confidence = std::min(2.0 * count, 1.0);
+        // This frame 1, the history 0 of 3 frames: mix(1, 0.75 * 0 + 0.25 * 1, confidence).
+        const double expected = 1.0 - confidence * 0.75;
+        INFO("the history saw depth " << seen << ": its count " << count << ", confidence " << confidence);
         vulkan::bound_chain b(*ctx, c.passes(), g, c.plan().inputs(s, W, H));
         b.load_history(TW, TH, planted_history(TW, TH, seen, 3.0f, [](int, int) { return 0.0f; }));
         b.run_once();
         const std::vector<float> history = b.read_history();
         for (size_t i = 0; i < history.size(); i += 4) {
             INFO("texel " << i / 4);
-            REQUIRE(history[i] == (same_surface ? 0.25f : 1.0f));
-            REQUIRE(history[i + 2] == (same_surface ? 4.0f : 1.0f));
+            REQUIRE(std::fabs(history[i] - expected) <= 1e-3); // 16-bit rounding
+            REQUIRE(std::fabs(history[i + 2] - (1.0 + 3.0 * confidence)) <= 4e-3);
         }
+        if (off <= tolerance / 2) CHECK(expected == 0.25);
+        if (off >= tolerance) CHECK(expected == 1.0);
     }
     require_clean(*ctx);
 }

@@ -176,3 +176,41 @@ TEST_CASE("wgsl: a variant without a WGSL form is refused by name, with the reas
         CHECK(std::string(e.what()).find("binding_model::webgpu") != std::string::npos);
     }
 }
+
+// A history variant's frames on Dawn (run_variant_frames_on_dawn: its two rgba16float history
+// images kept from frame to frame) against the SPIR-V on one Vulkan binding frame after frame,
+// each frame with its own camera (moving sideways) and frame index on the analytic crease with
+// motion vectors: every frame's every pixel bit for bit.
+TEST_CASE("wgsl: Dawn runs a history variant's frames, its history kept, bit for bit like the SPIR-V frame after frame")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    vulkan::gbuffer g = crease(W, H, 0.6f, proj);
+    g.motion.assign(size_t(W) * H * 2, 0.0f);
+    for (size_t i = 0; i < g.motion.size(); i += 2) g.motion[i] = -0.01f, g.motion[i + 1] = 0.004f; // NDC, current − previous
+    for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv", "ssao-s16-full-box-gbufworld-std-persp-cs-hist"}) {
+        INFO(name);
+        const variant v = variant_from_name(name);
+        const codegen::plan p = codegen::make_plan(v);
+        const std::vector<chain_inputs> frames = sideways_frames(p, settings_for(proj), W, H, 4);
+        const std::vector<wgsl::dawn_result> got = wgsl::run_variant_frames_on_dawn(plan_for(p, compile::target::wgsl),
+                                                                                    emitted_texts(p, compile::target::wgsl), g, frames);
+        REQUIRE(got.size() == frames.size());
+        std::vector<float> history;
+        const std::vector<vulkan::chain_result> expected = spirv_frames(*ctx, vulkan::chain(*ctx, p), g, frames, &history);
+        for (size_t f = 0; f < frames.size(); ++f) {
+            INFO("frame " << f);
+            std::vector<float> ao(got[f].ao.size());
+            for (size_t i = 0; i < ao.size(); ++i) ao[i] = got[f].ao[i] / 255.0f;
+            const ao_difference d = difference_of(ao, expected[f].ao);
+            std::cout << "history frame " << f << ": " << d.identical << " of " << d.pixels << " pixels bit-identical, largest difference "
+                      << d.largest * 255 << "/255\n";
+            CHECK(first_difference(ao, expected[f].ao) == "");
+        }
+        const auto [held, surface] = held_of(history, float(frames.size()));
+        CHECK(held * 2 > surface); // the history was used: most surface texels hold every frame
+    }
+    require_clean(*ctx);
+}

@@ -24,6 +24,10 @@
 //   ivec2(gl_FragCoord.xy) names the same texel on both.
 //   Samplers: nearest, clamp-to-edge (depth, normals, AO input) and repeat (noise), as the
 //   Vulkan harness's.
+//   run_frames(ctx, plan, texts, g, frames) runs frame after frame (each frame's inputs, one
+//   G-buffer) on one set of programs and images, as a frame loop does: a history pass's two
+//   rgba16f history images (cleared before the first frame) are swapped after each frame, and
+//   every frame's output is read back. run() is its one frame.
 //
 // USAGE
 //     aogen::gl::context gl;
@@ -206,9 +210,12 @@ inline void bind_by_name(GLuint p, const std::vector<codegen::resource>& resourc
     }
 }
 
-// The G-buffer, noise and samplers every pass reads, uploaded once.
+// The G-buffer, noise and samplers every pass reads, uploaded once; and a history pass's two
+// history images (rgba16f, cleared: no frame held), `history[read]` read this frame.
 struct chain_textures {
-    GLuint depth = 0, normals = 0, albedo = 0, noise = 0, clamp = 0, repeat = 0;
+    GLuint depth = 0, normals = 0, albedo = 0, motion = 0, noise = 0, clamp = 0, repeat = 0;
+    GLuint history[2] = {0, 0};
+    int read = 0;
 };
 
 // Binds `resources` of pass `name` at their bindings: its uniform block (bytes `uniforms`),
@@ -221,7 +228,11 @@ inline void bind_resources(objects& gl, const std::vector<codegen::resource>& re
         if (r.kind == codegen::resource_kind::uniform_buffer) {
             glBindBufferBase(GL_UNIFORM_BUFFER, unit, gl.uniform_buffer(uniforms));
         } else if (r.kind == codegen::resource_kind::storage_image) {
-            if (r.role != resource_role::output) fail("gl " + name, "binds storage image '" + r.name + "'", "valid: output (no diagnostics on GL)");
+            if (r.role == resource_role::history_output) {
+                glBindImageTexture(unit, t.history[1 - t.read], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+                continue;
+            }
+            if (r.role != resource_role::output) fail("gl " + name, "binds storage image '" + r.name + "'", "valid: output, history_output (no diagnostics on GL)");
             glBindImageTexture(unit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
         } else if (r.kind == codegen::resource_kind::combined_image_sampler) {
             GLuint texture = 0, sampler = t.clamp;
@@ -231,10 +242,13 @@ inline void bind_resources(objects& gl, const std::vector<codegen::resource>& re
             case resource_role::gbuffer_albedo: texture = t.albedo; break;
             case resource_role::noise: texture = t.noise, sampler = t.repeat; break;
             case resource_role::ao_input: texture = previous; break;
+            case resource_role::history: texture = t.history[t.read]; break;
+            case resource_role::motion: texture = t.motion; break;
             default: break;
             }
             if (!texture)
-                fail("gl " + name, "reads '" + r.name + "', which this run has not", "valid: depth, normals and albedo (a G-buffer with them), noise, ao_input");
+                fail("gl " + name, "reads '" + r.name + "', which this run has not",
+                     "valid: depth, normals, albedo and motion vectors (a G-buffer with them), noise, ao_input, history");
             glActiveTexture(GL_TEXTURE0 + unit);
             glBindTexture(GL_TEXTURE_2D, texture);
             glBindSampler(unit, sampler);
@@ -263,72 +277,98 @@ inline void draw(objects& gl, GLuint output, int w, int h)
 
 // `p` is the plan the texts were emitted from (emitted_texts(p, target)): its passes,
 // resources, output format, workgroups and pixels per invocation are what the runner binds
-// and dispatches.
-inline chain_result run(const context& ctx, const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
+// and dispatches. `frames` holds each frame's inputs (plan.inputs of that frame's settings):
+// the frames run one after the other on one G-buffer, a history pass keeping its history
+// from frame to frame (two rgba16f images, cleared before the first, swapped after each), as
+// a renderer's frame loop does; each frame's output is read back.
+inline std::vector<chain_result> run_frames(const context& ctx, const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g,
+                                            const std::vector<chain_inputs>& frames)
 {
     ctx.make_current();
     const variant& v = p.variant();
     if (has_prefilter_pass(v))
         fail("gl chain", to_name(v) + " has a depth MIP chain, which this runner does not build yet",
              "valid: variants without -mip<N> (the Vulkan harness runs those with one)");
-    if (has_history_pass(v))
-        fail("gl chain", to_name(v) + " has a history pass, which this runner does not keep yet",
-             "valid: variants without -hist or -histmv (the Vulkan harness runs those with one)");
     const std::vector<pass_kind>& kinds = p.passes();
     const std::vector<shader_stage> stages = codegen::stages(v);
-    if (texts.size() != kinds.size() * stages.size() || in.uniforms.size() != kinds.size())
-        fail("gl chain", std::to_string(texts.size()) + " texts and " + std::to_string(in.uniforms.size()) + " uniform blocks for " + to_name(v),
-             "valid: " + std::to_string(kinds.size() * stages.size()) + " texts (" + std::to_string(stages.size()) + " per pass) and " +
-                 std::to_string(kinds.size()) + " uniform blocks");
+    if (frames.empty()) fail("gl chain frames", "none given for " + to_name(v), "valid: one chain_inputs per frame, at least one");
+    for (const chain_inputs& in : frames)
+        if (texts.size() != kinds.size() * stages.size() || in.uniforms.size() != kinds.size())
+            fail("gl chain", std::to_string(texts.size()) + " texts and " + std::to_string(in.uniforms.size()) + " uniform blocks for " + to_name(v),
+                 "valid: " + std::to_string(kinds.size() * stages.size()) + " texts (" + std::to_string(stages.size()) + " per pass) and " +
+                     std::to_string(kinds.size()) + " uniform blocks");
     const size_t pixels = size_t(g.width) * size_t(g.height);
     if (g.width < 1 || g.height < 1 || g.depth.size() != pixels || (!g.normals.empty() && g.normals.size() != 4 * pixels) ||
-        (!g.albedo.empty() && g.albedo.size() != 4 * pixels))
+        (!g.albedo.empty() && g.albedo.size() != 4 * pixels) || (!g.motion.empty() && g.motion.size() != 2 * pixels))
         fail("gl chain", "G-buffer of " + std::to_string(g.width) + "x" + std::to_string(g.height) + " with " + std::to_string(g.depth.size()) + " depths",
-             "valid: width × height depths and none or 4 × that normals and albedo values");
+             "valid: width × height depths, none or 4 × that normals and albedo values, none or 2 × that motion values");
 
     detail::objects gl;
     detail::chain_textures t;
     t.depth = gl.texture(g.width, g.height, GL_R32F, GL_RED, GL_FLOAT, g.depth.data());
     t.normals = g.normals.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.normals.data());
     t.albedo = g.albedo.empty() ? 0 : gl.texture(g.width, g.height, GL_RGBA32F, GL_RGBA, GL_FLOAT, g.albedo.data());
-    t.noise = gl.texture(in.noise_size, in.noise_size, GL_RGBA32F, GL_RGBA, GL_FLOAT, in.noise.data());
+    t.motion = g.motion.empty() ? 0 : gl.texture(g.width, g.height, GL_RG32F, GL_RG, GL_FLOAT, g.motion.data());
+    t.noise = gl.texture(frames[0].noise_size, frames[0].noise_size, GL_RGBA32F, GL_RGBA, GL_FLOAT, frames[0].noise.data());
     t.clamp = gl.sampler(GL_CLAMP_TO_EDGE), t.repeat = gl.sampler(GL_REPEAT);
     const auto [tw, th] = p.target_size(g.width, g.height);
+    if (has_history_pass(v)) {
+        const std::vector<uint16_t> zeros(size_t(tw) * size_t(th) * 4, 0); // 0 frames held
+        for (GLuint& h : t.history) h = gl.texture(tw, th, GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, zeros.data());
+    }
     const bool compute = v.stage == pipeline_stage::compute;
     const GLenum format = compute ? detail::image_format(codegen::output_format_of(v, p.source_options())) : GL_R8;
 
-    GLuint previous = 0;
-    int out_w = 0, out_h = 0;
+    // Each pass's program and output, made once for every frame.
+    std::vector<GLuint> programs, outputs;
+    std::vector<std::pair<int, int>> sizes;
     for (size_t i = 0; i < kinds.size(); ++i) {
         const pass_kind pass = kinds[i];
-        const codegen::shader_plan& shader = p.pass_shader(i);
         const std::string name = p.name() + "." + names::name_of(pass_kind_names, pass, "pass");
-        out_w = pass == pass_kind::upsample ? g.width : tw, out_h = pass == pass_kind::upsample ? g.height : th;
-        const GLuint output = gl.texture(out_w, out_h, format, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+        sizes.push_back(pass == pass_kind::upsample ? std::pair<int, int>{g.width, g.height} : std::pair<int, int>{tw, th});
+        outputs.push_back(gl.texture(sizes.back().first, sizes.back().second, format, GL_RED, GL_UNSIGNED_BYTE, nullptr));
         const std::string& last = texts[i * stages.size() + stages.size() - 1]; // the compute or fragment shader
-        const GLuint program = compute ? gl.program({{GL_COMPUTE_SHADER, &last}}, name)
-                                       : gl.program({{GL_VERTEX_SHADER, &texts[i * 2]}, {GL_FRAGMENT_SHADER, &last}}, name);
-        glUseProgram(program);
-        if (!detail::has_binding_qualifiers(last)) detail::bind_by_name(program, shader.resources);
-        detail::bind_resources(gl, shader.resources, name, in.uniforms[i], t, previous, output, format);
-        if (compute) {
-            const int k = shader.pixels_per_invocation;
-            glDispatchCompute(detail::groups(out_w, k, shader.workgroup.first), detail::groups(out_h, k, shader.workgroup.second), 1);
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-        } else {
-            detail::draw(gl, output, out_w, out_h);
-        }
-        previous = output;
+        programs.push_back(compute ? gl.program({{GL_COMPUTE_SHADER, &last}}, name)
+                                   : gl.program({{GL_VERTEX_SHADER, &texts[i * 2]}, {GL_FRAGMENT_SHADER, &last}}, name));
     }
-    chain_result r;
-    r.width = out_w, r.height = out_h;
-    const std::vector<uint8_t> rgba = detail::read_back(previous, out_w, out_h);
-    r.ao.resize(size_t(out_w) * size_t(out_h));
-    for (size_t p = 0; p < r.ao.size(); ++p) r.ao[p] = rgba[4 * p] / 255.0f; // .r
-    if (v.bent_normals) r.bent_normal = decode_bent_normals(rgba.data(), r.ao.size());
+    std::vector<chain_result> results;
+    for (const chain_inputs& in : frames) {
+        GLuint previous = 0;
+        for (size_t i = 0; i < kinds.size(); ++i) {
+            const codegen::shader_plan& shader = p.pass_shader(i);
+            const std::string name = p.name() + "." + names::name_of(pass_kind_names, kinds[i], "pass");
+            const std::string& last = texts[i * stages.size() + stages.size() - 1];
+            const auto [out_w, out_h] = sizes[i];
+            glUseProgram(programs[i]);
+            if (!detail::has_binding_qualifiers(last)) detail::bind_by_name(programs[i], shader.resources);
+            detail::bind_resources(gl, shader.resources, name, in.uniforms[i], t, previous, outputs[i], format);
+            if (compute) {
+                const int k = shader.pixels_per_invocation;
+                glDispatchCompute(detail::groups(out_w, k, shader.workgroup.first), detail::groups(out_h, k, shader.workgroup.second), 1);
+                glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+            } else {
+                detail::draw(gl, outputs[i], out_w, out_h);
+            }
+            previous = outputs[i];
+        }
+        t.read = 1 - t.read; // the history written is the next frame's to read
+        chain_result r;
+        r.width = sizes.back().first, r.height = sizes.back().second;
+        const std::vector<uint8_t> rgba = detail::read_back(previous, r.width, r.height);
+        r.ao.resize(size_t(r.width) * size_t(r.height));
+        for (size_t k = 0; k < r.ao.size(); ++k) r.ao[k] = rgba[4 * k] / 255.0f; // .r
+        if (v.bent_normals) r.bent_normal = decode_bent_normals(rgba.data(), r.ao.size());
+        results.push_back(std::move(r));
+    }
     const GLenum error = glGetError();
     if (error != GL_NO_ERROR) fail("gl chain " + p.name(), "GL error " + std::to_string(error), "valid: none");
-    return r;
+    return results;
+}
+
+// One frame of run_frames: a cleared history (a history pass writes this frame alone).
+inline chain_result run(const context& ctx, const codegen::plan& p, const std::vector<std::string>& texts, const gbuffer& g, const chain_inputs& in)
+{
+    return run_frames(ctx, p, texts, g, {in}).front();
 }
 
 } // namespace aogen::gl

@@ -14,15 +14,16 @@
 //                `ghost_window` frames (disoccluded: age < ghost_window) -- where a history
 //                is wrong or young
 //     flicker    the RMS of the frame-to-frame change of (AO − truth) at one surface point:
-//                pixel p of frame f against the pixel its point stood on in frame f − 1, over
-//                the points in view in both -- what a still error does not show
+//                pixel p of frame f against frame f − 1's (AO − truth) where p's point stood
+//                (bilinear over that frame's pixels of the same object), over the points in
+//                view in both -- what a still error does not show
 //   A point's age (motion_metrics.hpp's next_ages) is the truth's, not a shader's guess: frame f's hit
 //   point, moved back by its object's motion, is in view at frame f − 1 when it projects
 //   onto that frame's screen and nothing of frame f − 1's scene lies between it and that
 //   frame's eye (a ray cast in frame f − 1's tracer).
 //
 // USAGE
-//     aogen_report::motion_scene m(ctx, scene, {16, 8, 4, 16});   // frames, first scored, window, grid
+//     aogen_report::motion_scene m(ctx, scene, {16, 8, 4, 16}, history);   // frames, first scored, window, grid
 //     aogen_report::motion_record r = m.score(chain);              // r.error, r.ghosting, r.flicker
 //
 // WHY
@@ -74,7 +75,7 @@ struct motion_frame {
     aogen::scenes::scene scene;                       // the scene at this frame
     std::unique_ptr<aogen::truth::scene> tracer;
     aogen::scenes::gbuffer world;                     // ray-cast with world normals: the reference's, the ages'
-    std::vector<long> from;                           // previous_pixels (empty at frame 0)
+    std::vector<previous_place> from;                 // previous_pixels (empty at frame 0)
     std::vector<int> ages;                            // after this frame
     std::unique_ptr<reference> truth;                 // scored frames only
 };
@@ -82,7 +83,8 @@ struct motion_frame {
 class motion_scene {
 public:
     // Every frame's G-buffer and ages; the references of the scored frames (the tracing).
-    motion_scene(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, const motion_options& o) : ctx_(ctx), scene_(s), options_(o)
+    motion_scene(aogen::vulkan::context& ctx, const aogen::scenes::scene& s, const motion_options& o, const aogen::history_params& history = {})
+        : ctx_(ctx), scene_(s), options_(o), history_(history)
     {
         const int frames = std::min(o.frames, aogen::scenes::frame_count(s));
         if (frames < 2 || o.first_scored < 1 || o.first_scored >= frames)
@@ -107,8 +109,10 @@ public:
     int frames() const { return int(frames_.size()); }
     const motion_frame& frame(int f) const { return frames_.at(size_t(f)); }
 
-    // Chain `c` along the path, one binding frame after frame (its history kept), scored.
-    motion_record score(const aogen::vulkan::chain& c)
+    // Chain `c` along the path, one binding frame after frame (its history kept), scored;
+    // its history pass with the scene's settings (the constructor's), or `history`.
+    motion_record score(const aogen::vulkan::chain& c) { return score(c, history_); }
+    motion_record score(const aogen::vulkan::chain& c, const aogen::history_params& history)
     {
         const aogen::codegen::plan& p = c.plan();
         const aogen::variant& v = p.variant();
@@ -119,6 +123,7 @@ public:
             const aogen::vulkan::gpu_gbuffer& g = gpu(f, v);
             aogen::vulkan::chain_settings s = default_settings(v, m.scene);
             s.frame = uint32_t(f);
+            s.history = history;
             s.reset_history = f == 0;
             if (f > 0) s.previous_camera = default_settings(v, frames_[size_t(f) - 1].scene).camera;
             const aogen::chain_inputs in = p.inputs(s, g.width(), g.height());
@@ -126,7 +131,8 @@ public:
             else bound->set_gbuffer(g), bound->set_uniforms(in);
             const aogen::vulkan::chain_result out = bound->run_once();
             if (!m.truth) continue;
-            scored.push_back({upsample(out.ao, out.width, out.height, aogen::output_scale(v), g.width(), g.height()), m.truth.get(), m.from, m.ages});
+            scored.push_back({upsample(out.ao, out.width, out.height, aogen::output_scale(v), g.width(), g.height()), m.truth.get(), m.from, m.ages,
+                              m.world.geometry, g.width()});
         }
         motion_record r = motion_metrics(scored, options_.ghost_window);
         r.variant = p.name(), r.scene = scene_.name;
@@ -156,6 +162,7 @@ private:
     aogen::vulkan::context& ctx_;
     aogen::scenes::scene scene_;
     motion_options options_;
+    aogen::history_params history_;
     std::vector<motion_frame> frames_;
     std::vector<std::pair<int, std::unique_ptr<aogen::vulkan::gpu_gbuffer>>> uploaded_;
 };

@@ -144,6 +144,7 @@ struct report_data {
     std::vector<variant_record> twins;     // the point-cloud twins of the feature saving
     std::vector<feature_saving> savings;
     motion_options motion_settings;        // what the report in motion ran
+    aogen::history_params history;         // the history pass's settings, still and in motion
     std::vector<motion_record> motion;     // per variant and scene with a path (motion.hpp); empty: not run
     phase_times phases;
 };

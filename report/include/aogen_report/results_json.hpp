@@ -25,6 +25,7 @@
 //     "feature_saving": [{selected, everything_on, selected_instructions, everything_on_instructions,
 //                         selected_ms, everything_on_ms, ratio, ratio_p10, ratio_p90,
 //                         selected_rmse, everything_on_rmse, left_out}],
+//     "history": {blend, clamp, range, widening, gamma, depth_tolerance},  // the history pass's settings (--history)
 //     "motion": {frames, first_scored, ghost_window, rays_per_pixel,     // the report in motion (motion.hpp)
 //                runs: [{variant, scene, error, ghosting, flicker, ghost_pixels, flicker_pixels, rmse: [per scored frame]}]} }
 // "raw" counts what each pass computed before its finite/range guard (diagnostics.hpp);
@@ -181,6 +182,9 @@ inline std::string results_json(const report_data& d, const report_meta& meta)
                                        {"selected_rmse", f.selected_rmse},
                                        {"everything_on_rmse", f.everything_on_rmse},
                                        {"left_out", f.left_out}});
+    j["history"] = {{"blend", d.history.blend}, {"clamp", aogen::names::name_of(aogen::history_clamp_names, d.history.clamp, "history clamp")},
+                    {"range", d.history.range}, {"widening", d.history.min_max_widening}, {"gamma", d.history.variance_gamma},
+                    {"depth_tolerance", d.history.depth_tolerance}};
     j["motion"] = detail::motion_json(d);
     return j.dump(2) + "\n";
 }

@@ -103,7 +103,9 @@ struct report_settings {
     // The report in motion (motion.hpp): these variants along every scene that has a path;
     // none: not run.
     std::vector<aogen::variant> motion_variants = default_motion_variants();
+    std::vector<aogen::scenes::scene> motion_scenes; // scenes with a camera path (arguments.hpp's load_motion_scenes)
     motion_options motion;
+    aogen::history_params history;   // the history pass's settings, still and in motion (--history)
     aogen::vulkan::device_options device;
     std::function<void(const std::string&)> progress = [](const std::string&) {};
     std::function<void(const report_data&)> scene_done = [](const report_data&) {};
@@ -195,11 +197,12 @@ inline std::string why_not(const variant_record& r, const scene_record& s, bool 
 // 1..frames-1 and scores the mean of all `frames` frames against the truth -- or, for a chain
 // with a history pass, which accumulates the frames itself, its own output after frames
 // 0..frames-1 on one binding. The single-frame metrics follow in finish_scoring().
-inline run_record score(const compiled_variant& c, scene_bench& bench, int frames)
+inline run_record score(const compiled_variant& c, scene_bench& bench, int frames, const aogen::history_params& history)
 {
     run_record r;
     const aogen::vulkan::chain& chain = c.diagnostic ? *c.diagnostic : *c.shipped;
     aogen::vulkan::chain_settings settings = default_settings(chain.plan().variant(), bench.scene());
+    settings.history = history;
     const bench_run out = bench.run(chain, settings);
     r.raw = out.out.raw;
     r.ao = ao_readback::of(out.out, out.scale);
@@ -339,14 +342,14 @@ inline compiled_records compile_records(aogen::vulkan::context& ctx, report_data
 
 // Scoring: every record that can run on the bench's scene, once, in its diagnostic build;
 // each record gets a run for the scene (a skipped one saying why). Returns the runs scored.
-inline size_t score_scene(scene_bench& bench, report_data& out, const compiled_records& c, int frames)
+inline size_t score_scene(scene_bench& bench, report_data& out, const compiled_records& c, int frames, const aogen::history_params& history)
 {
     const scene_record& scene = out.scenes.back();
     std::vector<run_record*> scored;
     const auto score_record = [&](variant_record& r, const compiled_variant& compiled, bool twin) {
         const std::string skipped = why_not(r, scene, twin);
         // A twin is there for its time and single-frame error (the feature saving): one frame.
-        r.runs.push_back(skipped.empty() ? score(compiled, bench, twin ? 1 : frames) : run_record{skipped});
+        r.runs.push_back(skipped.empty() ? score(compiled, bench, twin ? 1 : frames, history) : run_record{skipped});
         if (skipped.empty()) scored.push_back(&r.runs.back());
     };
     for (size_t i = 0; i < out.variants.size(); ++i) score_record(out.variants[i], c.variants[i], false);
@@ -426,12 +429,12 @@ inline void run_motion(aogen::vulkan::context& ctx, const report_settings& setti
     out.motion_settings = settings.motion;
     std::vector<std::unique_ptr<aogen::vulkan::chain>> chains;
     for (const aogen::variant& v : settings.motion_variants) chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, aogen::codegen::make_plan(v)));
-    for (const aogen::scenes::scene& asked : settings.scenes) {
+    for (const aogen::scenes::scene& asked : settings.motion_scenes) {
         if (aogen::scenes::frame_count(asked) < 2) continue;
         settings.progress("in motion: " + asked.name + ", " + std::to_string(std::min(settings.motion.frames, aogen::scenes::frame_count(asked))) +
                           " frames (" + std::to_string(settings.motion.grid * settings.motion.grid) + " rays per pixel from frame " +
                           std::to_string(settings.motion.first_scored) + "), " + std::to_string(chains.size()) + " variants");
-        motion_scene m(ctx, sized(asked, settings), settings.motion);
+        motion_scene m(ctx, sized(asked, settings), settings.motion, settings.history);
         for (const auto& c : chains)
             if (cannot_run(c->plan().variant(), m.scene()).empty()) out.motion.push_back(m.score(*c));
     }
@@ -444,7 +447,7 @@ inline report_data run_report(const report_settings& settings)
     using clock = std::chrono::steady_clock;
     detail::require_scoreable(settings);
     report_data out;
-    out.grid = settings.grid, out.frames = settings.frames, out.fetch_floor = settings.fetch_floor;
+    out.grid = settings.grid, out.frames = settings.frames, out.fetch_floor = settings.fetch_floor, out.history = settings.history;
     // Then: a missing device fails before any compiling or tracing.
     aogen::vulkan::context ctx(settings.device);
     out.device = ctx.device_name();
@@ -477,7 +480,7 @@ inline report_data run_report(const report_settings& settings)
         const auto score_start = clock::now();
         settings.progress(tag + ": scoring " + std::to_string(out.variants.size() + out.twins.size()) + " variants" +
                           (settings.frames > 1 ? " (" + std::to_string(settings.frames) + " frames each)" : ""));
-        out.phases.runs += detail::score_scene(bench, out, compiled, settings.frames);
+        out.phases.runs += detail::score_scene(bench, out, compiled, settings.frames, settings.history);
         out.phases.score += detail::seconds_since(score_start);
 
         const auto time_start = clock::now();
