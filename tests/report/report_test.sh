@@ -61,6 +61,18 @@ def errors(r):  # everything but the times
 assert errors(a) == errors(b), "errors differ between two runs"
 assert [s["truth_noise_rms"] for s in a["scenes"]] == [s["truth_noise_rms"] for s in b["scenes"]]
 assert a["rays_per_pixel"] == 1024 and len(a["scenes"]) == 3 and len(a["variants"]) == 4 and a["complete"] is True
+# In motion: stairs (the one scene with a camera path) and the default motion variants, the
+# same figures both runs; the history pass steadies every twin (less flicker).
+m = a["motion"]
+assert m["frames"] == 12 and m["first_scored"] == 6 and m["rays_per_pixel"] == 256, m
+assert [r["scene"] for r in m["runs"]] == ["stairs"] * 8, [r["scene"] for r in m["runs"]]
+assert m == b["motion"], "the report in motion differs between two runs"
+by = {r["variant"]: r for r in m["runs"]}
+for name, r in by.items():
+    assert len(r["rmse"]) == 6 and all(0 <= r[k] < 1 for k in ("error", "ghosting", "flicker")), r
+    if name.endswith(("-hist", "-histmv")):
+        twin = by[name.rsplit("-", 1)[0]]
+        assert r["flicker"] < twin["flicker"], (name, r["flicker"], twin["flicker"])
 # Asked for by hand: the protocol as asked, on a CPU device too (cpu_device says which ran it).
 assert {k: t for k, t in a["timing"].items() if k != "cpu_device"} == {"rounds": 2, "iterations": 1, "warmup_ms": 0, "budget_ms": 1000, "fetch_floor": True}, a["timing"]
 assert all(s["iterations"] == 1 for s in a["scenes"])

@@ -46,6 +46,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -153,8 +154,11 @@ private:
         o.use_scene_normals = false;
         o.normals = space;
         o.face_camera = false; // as the scene's renderer stores them
-        const aogen::scenes::scene seen = for_variant(scene_, v);
-        const aogen::scenes::gbuffer rendered = aogen::scenes::render_frame(seen, f, o);
+        o.motion = true;       // from the frame before, through the frame's own tracer (built once, in the constructor)
+        const std::optional<aogen::scenes::scene> before = f > 0 ? std::optional(for_variant(frames_[size_t(f) - 1].scene, v)) : std::nullopt;
+        o.previous = before ? &*before : nullptr;
+        const motion_frame& m = frames_[size_t(f)];
+        const aogen::scenes::gbuffer rendered = aogen::scenes::render_gbuffer(for_variant(m.scene, v), *m.tracer, o);
         uploaded_.emplace_back(key, std::make_unique<aogen::vulkan::gpu_gbuffer>(ctx_, renderer_gbuffer(rendered)));
         return *uploaded_.back().second;
     }
