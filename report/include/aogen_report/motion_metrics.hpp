@@ -54,7 +54,7 @@ struct previous_place {
 inline previous_place previous_pixel(const aogen::scenes::scene& now, const aogen::scenes::scene& before, const aogen::truth::scene& before_tracer,
                                      aogen::truth::vec3 position, int id)
 {
-    const aogen::truth::vec3 was = position - (aogen::scenes::detail::placement(now, id) - aogen::scenes::detail::placement(before, id));
+    const aogen::truth::vec3 was = aogen::scenes::position_in(before, now, position, id);
     const std::optional<aogen::scenes::ndc_point> ndc = aogen::scenes::project_ndc(before.camera, was);
     if (!ndc || !(std::fabs(ndc->x) < 1.0 && std::fabs(ndc->y) < 1.0)) return {};
     const int w = before.camera.width, h = before.camera.height;

@@ -226,11 +226,23 @@ inline void require_same_geometry(const scene& s, const scene& previous)
              "valid: the same scene at frame f − 1, at_frame(s, f − 1)");
 }
 
+} // namespace detail
+
+// Where point p of geometry `id` (scene::build order) in scene `s` stood in `previous`, the
+// same scene at another frame: p moved back by that geometry's translation between the two
+// (static geometry: p itself). The motion vectors and the report in motion's ages read it.
+inline dvec3 position_in(const scene& previous, const scene& s, dvec3 p, int id)
+{
+    return p - (detail::placement(s, id) - detail::placement(previous, id));
+}
+
+namespace detail {
+
 // Pixel i's motion vector from `previous` (CONVENTIONS): its hit point p on geometry `id`,
 // moved back by that geometry's translation since `previous`, seen by previous's camera.
 inline void write_motion(gbuffer& g, size_t i, ndc_point now, dvec3 p, int id, const scene& s, const scene& previous)
 {
-    const dvec3 was = p - (placement(s, id) - placement(previous, id));
+    const dvec3 was = position_in(previous, s, p, id);
     const std::optional<ndc_point> then = project_ndc(previous.camera, was);
     const ndc_point mv = then ? ndc_point{now.x - then->x, now.y - then->y} : behind_previous_camera;
     g.motion[2 * i] = float(mv.x), g.motion[2 * i + 1] = float(mv.y);
