@@ -35,7 +35,8 @@
 //    log2(1 + depth_tolerance), 0 past all of it (another surface's history: a disocclusion),
 //    linear between. The bilinear read of the 2 x 2 texels about the previous uv, each by its
 //    bilinear weight times its count, is mixed toward the Catmull-Rom read of the 4 x 4 about
-//    it by the least count of those 16: Catmull-Rom reproduces quadratics, so the history does
+//    it (each tap's weight times its count, over the sum of those: the taps of the point's own
+//    surface) as that sum goes from 0.5 to 1: Catmull-Rom reproduces quadratics, so the history does
 //    not blur a little more each frame the camera moves, as a bilinear read makes it
 //    (measured: a lower error in motion, BENCHMARKS.md). The history is trusted as far as the
 //    bilinear weights' sum reaches 0.5 (its confidence): a sliver of the footprint as little as
@@ -125,8 +126,13 @@ vec4 ao_catmull_rom(float f)
 
 // Step 2: (AO, frames, confidence) of the history at `previous_uv` for a surface of depth code
 // `expected`: the bilinear read of the 2 x 2 texels about it, each by its bilinear weight times
-// ao_history_weight, mixed toward the Catmull-Rom read of the 4 x 4 about it by the least
-// weight of those 16 (all 1: Catmull-Rom alone; one texel another surface's: bilinear alone).
+// ao_history_weight, mixed toward the Catmull-Rom read of the 4 x 4 about it. That read weighs
+// each tap by its Catmull-Rom weight times its count and divides by the sum S of those: the
+// quadratic through the taps of this surface. It is mixed in by 2 S - 1 clamped to [0, 1]
+// (all 16 count: S = 1, Catmull-Rom alone; a corner tap another surface's: S a little below
+// 1, nearly all Catmull-Rom -- measured lower in motion than a mix by the least count, which
+// gave a thin surface's edge pixels the bilinear read's blur; S <= 0.5: bilinear alone, and the
+// division never meets a small S).
 // Confidence: the bilinear weights' sum over 0.5, at most 1 -- half the footprint is enough, a
 // sliver of it trusted as little as it covers; a bilinear texel off the image weighs 0, so a
 // point leaving the previous screen fades out of its history. Catmull-Rom's taps are clamped
@@ -158,18 +164,19 @@ vec3 ao_history_fetch(vec2 previous_uv, float expected)
     }
     if (!(weight > 1e-6)) return vec3(0.0);
     ao /= weight, frames /= weight;
-    // Catmull-Rom over the 4 x 4, as far as all of them are this surface's: a bilinear read
-    // blurs the history a little every frame it moves, and the blur adds up.
+    // Catmull-Rom over the 4 x 4 taps that count: a bilinear read blurs the history a little
+    // every frame it moves, and the blur adds up.
     vec4 wx = ao_catmull_rom(f.x), wy = ao_catmull_rom(f.y);
-    float sharp = 0.0, share = 1.0;
+    float sharp = 0.0, sum = 0.0;
     for (int j = 0; j < 4; ++j) {
         for (int i = 0; i < 4; ++i) {
             vec4 h = texelFetch(u_history, clamp(i0 + ivec2(i - 1, j - 1), ivec2(0), last), 0);
-            share = min(share, ao_history_weight(h, expected));
-            if (share > 0.0) sharp += wx[i] * wy[j] * h.r; // finite: a texel that is not has weight 0
+            float w = wx[i] * wy[j] * ao_history_weight(h, expected);
+            if (w != 0.0) sharp += w * h.r, sum += w; // finite: a texel that is not has weight 0
         }
     }
-    if (share > 0.0) ao = mix(ao, clamp(sharp, 0.0, 1.0), share);
+    float share = clamp(2.0 * sum - 1.0, 0.0, 1.0);
+    if (share > 0.0) ao = mix(ao, clamp(sharp / sum, 0.0, 1.0), share);
     return vec3(ao, frames, min(weight * 2.0, 1.0));
 }
 

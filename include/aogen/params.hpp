@@ -568,25 +568,30 @@ struct history_params {
     // the plain mean of its n frames, the mean the report's accumulated figure scores -- and
     // from n = 1 / blend - 1 on, each frame's share decays by (1 - blend) per frame: an
     // exponential window of about 2 / blend - 1 frames. 1 keeps no history.
-    // Default 0.2 (ours), chosen by the error in motion (aogen_history_sweep, BENCHMARKS.md
-    // § 2026-12-07 (session 7)): against 0.05 and 0.1 -- UE5's AmbientOcclusionTemporalBlendWeight
-    // and three.js's alpha are 0.1, HDRP's feedback 0.85..0.95 is 0.05..0.15 here -- 0.2 had
-    // the lowest error in motion for every clamp, with and without a spatial filter before it.
+    // Default 0.1 (UE5's AmbientOcclusionTemporalBlendWeight, three.js's alpha; HDRP's
+    // feedback 0.85..0.95 is 0.05..0.15 here), chosen in motion (aogen_history_sweep,
+    // BENCHMARKS.md § 2026-12-07 (session 8)) over 0.05 and 0.2 for four chains with the pass
+    // (gtao-1x4- and 2x2-half, -noblur and -denoise): 0.2 has an error in motion 1.0-1.5 %
+    // lower for each, 0.1 a flicker 8-12 % lower -- within the 0.25x of the twin's that
+    // gtao-1x4-half-noblur-histmv reaches only at 0.1. 0.05 acts as 0.1 over the report's 12
+    // frames (w = 1 / (n + 1) stays above it).
     static constexpr float_range blend_range{0.01f, 1.0f, false};
-    float blend = 0.2f;
+    float blend = 0.1f;
 
     // The clamp (history_clamp), and its width for each kind; only the clamp's own is read.
-    // Default: range, ±0.2 (ours; UE5's clamp at twice its width), chosen by the error in
-    // motion against no clamp, ranges of 0.05 and 0.1, HDRP's min/max (widened by 0 and 0.05)
-    // and variance clipping at γ = 1, 1.5 and 2: ±0.1 and ±0.2 tie for the lowest mean error
-    // of gtao-2x2-half-denoise and -noblur with the pass, and ±0.2 flickers less.
-    history_clamp clamp = history_clamp::range;
-    // range: the history stays within this of the pixel's AO. UE5: 0.1.
+    // Default: min_max widened by 0.05 (HDRP's box; its widening by motion left out), chosen
+    // by the mean error in motion of the four chains above against no clamp, ranges of 0.05,
+    // 0.1 and 0.2 (UE5's kind), the plain box and variance clipping at gamma 1, 1.5 and 2. A range
+    // clamp suits a spatially filtered AO only: about a noisy pixel's own value it holds the
+    // history to that pixel's noise (gtao-1x4-half-noblur-histmv: range 0.2 0.0735, min_max
+    // 0.0589).
+    history_clamp clamp = history_clamp::min_max;
+    // range: the history stays within this of the pixel's AO. UE5: 0.1; 0.2 (ours: the lowest error of the three ranges).
     static constexpr float_range range_range{0.0f, 1.0f, false};
     float range = 0.2f;
-    // min_max: added to both ends of the neighbourhood's [min, max]. HDRP widens by motion; 0 (ours) is the plain box.
+    // min_max: added to both ends of the neighbourhood's [min, max]. HDRP widens by motion; 0.05 (ours).
     static constexpr float_range min_max_widening_range{0.0f, 1.0f, false};
-    float min_max_widening = 0.0f;
+    float min_max_widening = 0.05f;
     // variance: gamma, in standard deviations. Salvi's 1..1.25; 1 (ours).
     static constexpr float_range variance_gamma_range{0.0f, 16.0f, false};
     float variance_gamma = 1.0f;

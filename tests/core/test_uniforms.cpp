@@ -227,7 +227,7 @@ TEST_CASE("uniforms: the history block: members at std140's offsets, the camera'
     CHECK(float_at(still, 128 + 0) == proj[0][0]);
     CHECK(float_at(still, 192) == -0.5f); // NDC, current minus previous, y up: previous uv = uv - 0.5 (x, -y)
     CHECK(float_at(still, 196) == 0.5f);
-    CHECK(float_at(still, 200) == 0.2f);
+    CHECK(float_at(still, 200) == 0.1f); // the default blend
     int32_t kind;
     std::memcpy(&kind, still.data() + 204, 4);
     CHECK(kind == 1);
