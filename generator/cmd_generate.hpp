@@ -78,11 +78,16 @@ inline nlohmann::ordered_json history_entry(const variant& v)
     h["channels"] = ".r AO, .g log2 of the view depth, .b frames held (0: none)";
     h["size"] = "the AO target's: the screen's, or half of it rounded up at half resolution";
     h["read"] = {{"name", "u_history"}, {"binding", at(resource_role::history)}, {"wgsl_binding", at_webgpu(resource_role::history)}};
-    h["written"] = {{"name", "u_history_output"}, {"binding", at(resource_role::history_output)}, {"wgsl_binding", at_webgpu(resource_role::history_output)}};
+    const bool fragment = v.stage == pipeline_stage::fragment;
+    if (fragment) // two colour attachments: the AO at location 0, the history at 1
+        h["written"] = {{"name", "o_history"}, {"colour_attachment", 1}};
+    else
+        h["written"] = {{"name", "u_history_output"}, {"binding", at(resource_role::history_output)}, {"wgsl_binding", at_webgpu(resource_role::history_output)}};
     if (v.history == history_mode::motion_vectors)
         h["motion_vectors"] = {{"name", "u_motion"}, {"binding", at(resource_role::motion)}, {"wgsl_binding", at_webgpu(resource_role::motion)},
                                {"convention", "history_params::motion (default: NDC, current minus previous, y up)"}};
-    h["each_frame"] = "bind the image written last frame as u_history and the other as u_history_output, run the chain, swap the two";
+    h["each_frame"] = fragment ? "bind the image written last frame as u_history and render the history pass into the AO image (attachment 0) and the other (attachment 1), run the chain, swap the two"
+                               : "bind the image written last frame as u_history and the other as u_history_output, run the chain, swap the two";
     h["first_frame_and_resize"] = "two new images cleared to 0 (a cleared history holds no frame: the pass writes this frame alone)";
     h["camera_cut"] = "HistoryUniforms.reset = 1 (chain_settings::reset_history) for one frame: the output is the chain's without the pass, bit for bit";
     return h;

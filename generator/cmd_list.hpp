@@ -49,7 +49,7 @@ inline std::vector<list_row> axis_rows()
         {"deinterleaved", "off, on (compute)", extra(8)},
         {"bent normals", "off, on (gtao, vbao; compute)", extra(9)},
         {"multi-bounce", names::list(multi_bounce_mode_names) + " (gbuffer: each pixel's albedo from the G-buffer)", extra(10) + " | " + extra(11)},
-        {"history", names::list(history_mode_names) + " (compute; not with bent normals)", extra(12) + " | " + extra(13)},
+        {"history", names::list(history_mode_names) + " (not with bent normals)", extra(12) + " | " + extra(13)},
         {"workgroup", range(variant::workgroup_side_range) + " x " + range(variant::workgroup_side_range) + ", at most " +
                           std::to_string(variant::max_workgroup_invocations) + " (compute; default " + std::to_string(d.workgroup_x) + "x" +
                           std::to_string(d.workgroup_y) + ")", extra(14)},

@@ -2,7 +2,8 @@
 // of the render target (the AO target: half the screen at AO_HALF_RESOLUTION), drawn with
 // common/fullscreen_vertex.glsl (3 vertices, no vertex buffers) and a viewport covering
 // the target. The colour attachment, location 0, is a one-channel target (R8_UNORM);
-// the value written is ao_output(ao_pass(pixel), pixel): finite and in [0, 1].
+// the value written is ao_output(ao_pass(pixel), pixel): finite and in [0, 1]. The history
+// pass writes a second, location 1 (rgba16f): its history (history.glsl's ao_store_history).
 //
 // AO_DIAGNOSTICS (codegen::options::diagnostics) adds binding AO_BINDING_RAW, an r32f
 // storage image of the target's size that receives ao_pass(pixel) before the guard (as

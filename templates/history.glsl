@@ -9,7 +9,8 @@
 //                              without a blur), the AO target's size
 //   AO_BINDING_HISTORY         the previous frame's history: what AO_BINDING_HISTORY_OUTPUT
 //                              held after the previous frame (the engine swaps the two)
-//   AO_BINDING_HISTORY_OUTPUT  this frame's history, rgba16f, the AO target's size
+//   AO_BINDING_HISTORY_OUTPUT  this frame's history, rgba16f, the AO target's size (compute; a
+//                              fragment pass writes it as colour attachment 1)
 //   AO_BINDING_MOTION          (-histmv) the renderer's motion vectors, full resolution, .rg
 //   AO_BINDING_OUTPUT          the AO, as every filter pass writes it: what the upsample (or
 //                              the renderer) reads. The history is kept apart from it so that
@@ -65,17 +66,27 @@
 #if (defined(AO_HISTORY_CAMERA) + defined(AO_HISTORY_MOTION_VECTORS)) != 1
 #error aogen: exactly one of AO_HISTORY_CAMERA, AO_HISTORY_MOTION_VECTORS must be defined
 #endif
-#if !defined(AO_STAGE_COMPUTE)
-#error aogen: the history pass writes two images and needs the compute stage
+#if !defined(AO_BINDING_AO_INPUT) || !defined(AO_BINDING_HISTORY)
+#error aogen: AO_BINDING_AO_INPUT and AO_BINDING_HISTORY are not defined (codegen writes the bindings)
 #endif
-#if !defined(AO_BINDING_AO_INPUT) || !defined(AO_BINDING_HISTORY) || !defined(AO_BINDING_HISTORY_OUTPUT)
-#error aogen: AO_BINDING_AO_INPUT, AO_BINDING_HISTORY and AO_BINDING_HISTORY_OUTPUT are not defined (codegen writes the bindings)
+#if defined(AO_STAGE_COMPUTE) && !defined(AO_BINDING_HISTORY_OUTPUT)
+#error aogen: a compute history pass stores its history to AO_BINDING_HISTORY_OUTPUT, which is not defined
 #endif
 #if defined(AO_HISTORY_MOTION_VECTORS) && !defined(AO_BINDING_MOTION)
 #error aogen: a -histmv pass reads motion vectors, and AO_BINDING_MOTION is not defined
 #endif
 
-// u_ao_input, u_history, u_history_output, u_motion: declared by aogen::codegen (aogen/bindings.hpp).
+// u_ao_input, u_history, u_history_output (compute), u_motion: declared by aogen::codegen (aogen/bindings.hpp).
+
+// This frame's history texel for target pixel `p`: a storage image in compute; in fragment the
+// pass's second colour attachment (location 1, rgba16f), the AO being the first
+// (entry_fragment.glsl) -- a render target per image, as engines draw their temporal passes.
+#if defined(AO_STAGE_FRAGMENT)
+layout(location = 1) out vec4 o_history;
+void ao_store_history(ivec2 p, vec4 texel) { o_history = texel; }
+#else
+void ao_store_history(ivec2 p, vec4 texel) { imageStore(u_history_output, p, texel); }
+#endif
 
 // The most frames a history texel counts: enough for every blend (1 / 0.01 = 100), exact in 16 bits.
 const float AO_HISTORY_MAX_FRAMES = 1024.0;
@@ -208,7 +219,7 @@ ao_value ao_pass(ivec2 p)
     ivec2 full = ao_full_pixel(p);
     float depth = ao_load_depth(full);
     if (ao_is_background(depth)) {
-        imageStore(u_history_output, p, vec4(1.0, 0.0, 0.0, 0.0));
+        ao_store_history(p, vec4(1.0, 0.0, 0.0, 0.0));
         return ao_open_value();
     }
     ao_value current = ao_read_input(p);
@@ -228,6 +239,6 @@ ao_value ao_pass(ivec2 p)
         }
     }
     float own = ao_history_depth_code(-ao_view_z(ao_pixel_uv(full), depth));
-    imageStore(u_history_output, p, ao_is_finite(own) ? vec4(result, own, frames, 0.0) : vec4(result, 0.0, 0.0, 0.0));
+    ao_store_history(p, ao_is_finite(own) ? vec4(result, own, frames, 0.0) : vec4(result, 0.0, 0.0, 0.0));
     return ao_make_value(result, ao_value_bent(current));
 }

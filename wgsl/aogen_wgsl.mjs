@@ -177,7 +177,8 @@ async function toSpirv() {
 //                          rgba32float) at BINDING (a -mbg variant's last pass)
 //   history READ WRITE     the pass above is a history pass: it reads the history at binding
 //                          READ and writes the next at WRITE (two rgba16float textures of its
-//                          output's size, cleared, swapped after every frame)
+//                          output's size, cleared, swapped after every frame); WRITE -1: a
+//                          fragment pass, which writes it as its second colour target
 //   motion BINDING         the pass above reads motion.f32 at BINDING
 // Bindings follow aogen/bindings.hpp's webgpu model; workgroups are the WGSL's @workgroup_size.
 // Compute passes write rgba8unorm storage textures, fragment passes r8unorm render targets.
@@ -251,8 +252,10 @@ async function runChain() {
         if (p.motionBinding !== undefined) p.roles.push([p.motionBinding, tex, motion]);
         if (p.history) {
             // Two rgba16float images, cleared (0 frames held); frame f reads images[f % 2].
-            p.images = [0, 1].map(() => device.createTexture({ size: [p.w, p.h], format: "rgba16float", usage: usage.STORAGE_BINDING | usage.TEXTURE_BINDING }));
-            p.roles.push([p.history[0], tex, null], [p.history[1], { storageTexture: { access: "write-only", format: "rgba16float" } }, null]);
+            const written = fragment ? usage.RENDER_ATTACHMENT : usage.STORAGE_BINDING;
+            p.images = [0, 1].map(() => device.createTexture({ size: [p.w, p.h], format: "rgba16float", usage: written | usage.TEXTURE_BINDING }));
+            p.roles.push([p.history[0], tex, null]);
+            if (!fragment) p.roles.push([p.history[1], { storageTexture: { access: "write-only", format: "rgba16float" } }, null]);
         }
         p.layout = device.createBindGroupLayout({ entries: p.roles.map(([binding, kind]) => entry(binding, kind)) });
         const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
@@ -262,7 +265,7 @@ async function runChain() {
             p.pipeline = device.createRenderPipeline({
                 layout: pipelineLayout,
                 vertex: { module: device.createShaderModule({ code: text(p.vertex) }), entryPoint: "main" },
-                fragment: { module: device.createShaderModule({ code }), entryPoint: "main", targets: [{ format }] },
+                fragment: { module: device.createShaderModule({ code }), entryPoint: "main", targets: p.history ? [{ format }, { format: "rgba16float" }] : [{ format }] },
                 primitive: { topology: "triangle-list" },
             });
         } else {
@@ -281,12 +284,14 @@ async function runChain() {
             const resource = (binding, r) => {
                 if (binding === 0) return { buffer: p.buffer };
                 if (p.history && binding === p.history[0]) return p.images[f % 2].createView();
-                if (p.history && binding === p.history[1]) return p.images[(f + 1) % 2].createView();
+                if (p.history && binding === p.history[1]) return p.images[(f + 1) % 2].createView(); // compute: a storage texture
                 return r instanceof GPUSampler ? r : r.createView();
             };
             const group = device.createBindGroup({ layout: p.layout, entries: p.roles.map(([binding, , r]) => ({ binding, resource: resource(binding, r) })) });
             if (p.vertex !== undefined) {
-                const pass = encoder.beginRenderPass({ colorAttachments: [{ view: p.output.createView(), loadOp: "clear", clearValue: [0, 0, 0, 0], storeOp: "store" }] });
+                const target = (t) => ({ view: t.createView(), loadOp: "clear", clearValue: [0, 0, 0, 0], storeOp: "store" });
+                // A history pass's second target: the history it writes this frame.
+                const pass = encoder.beginRenderPass({ colorAttachments: p.history ? [target(p.output), target(p.images[(f + 1) % 2])] : [target(p.output)] });
                 pass.setPipeline(p.pipeline);
                 pass.setBindGroup(0, group);
                 pass.setViewport(0, 0, p.w, p.h, 0, 1);

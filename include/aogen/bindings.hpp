@@ -169,7 +169,7 @@ inline const char* what_it_holds(resource_role r)
     case resource_role::depth_mips: return "the depth MIP chain's levels 1.. in one r32f atlas (the prefilter's output; variants with depth mips only)";
     case resource_role::gbuffer_albedo: return "G-buffer albedo, full resolution, linear reflectance in .rgb (the last pass of -mbg variants only)";
     case resource_role::history: return "the previous frame's history_output, rgba16f, the AO target's size (.r AO, .g log2 of view depth, .b frames held)";
-    case resource_role::history_output: return "this frame's history, rgba16f storage image; the engine swaps it with history for the next frame";
+    case resource_role::history_output: return "this frame's history, rgba16f storage image (compute passes only: a fragment pass writes it as colour attachment 1); the engine swaps it with history for the next frame";
     case resource_role::motion: return "motion vectors, full resolution, in .rg (-histmv only; history_params::motion says their convention)";
     }
     return "";

@@ -59,7 +59,7 @@ struct variant_matrix {
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
     std::vector<multi_bounce_mode> multi_bounce{multi_bounce_mode::off};
     std::vector<bool> bent_normals{false}; // on: GTAO and VBAO compute variants only (others skip it)
-    std::vector<history_mode> history{history_mode::off}; // on: compute variants without bent normals only (others skip it)
+    std::vector<history_mode> history{history_mode::off}; // on: variants without bent normals only (others skip it)
 };
 
 // Appends canonical(v) unless an equal variant is already in `out`.
@@ -118,7 +118,7 @@ inline std::vector<variant> expand(const variant_matrix& m)
         if (pc && t != technique::ssao) continue;
         if (fp16 && t == technique::sao) continue;
         if (bn && (!has_slices(t) || stage != pipeline_stage::compute)) continue;
-        if (hist != history_mode::off && (bn || stage != pipeline_stage::compute)) continue;
+        if (hist != history_mode::off && bn) continue;
         validate(v);
         const variant c = canonical(v);
         if (seen.insert(to_name(c)).second) out.push_back(c);

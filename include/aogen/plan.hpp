@@ -222,6 +222,7 @@ inline std::vector<resource> resources_of(const variant& v, pass_kind pass, shad
     for (resource_role role : pass_roles(family)) {
         const bool declared = role == resource_role::normals          ? v.normals != normal_source::reconstructed
                               : role == resource_role::output         ? stage == shader_stage::compute
+                              : role == resource_role::history_output ? stage == shader_stage::compute // fragment: colour attachment 1
                               : role == resource_role::raw            ? o.diagnostics
                               : role == resource_role::depth_mips     ? has_prefilter_pass(v)
                               : role == resource_role::gbuffer_albedo ? reads_albedo(v, pass)

@@ -119,8 +119,9 @@ struct variant {
     // resolution and before the upsample, the chain blends this frame's filtered AO with its
     // own output of the previous frame, found by the camera (-hist) or the renderer's motion
     // vectors (-histmv), rejected where the surface there was another (a depth test) and
-    // clamped to this frame's neighbourhood (history_params). Compute stage; not with bent
-    // normals (the history holds the AO alone). Default: off.
+    // clamped to this frame's neighbourhood (history_params). Compute or fragment (there it
+    // writes two colour attachments); not with bent normals (the history holds the AO
+    // alone). Default: off.
     history_mode history = history_mode::off;
 };
 
@@ -193,9 +194,6 @@ inline void validate(const variant& v)
     if (v.bent_normals && v.stage != pipeline_stage::compute)
         fail("bent normals", "need the compute stage (a fragment pass writes one channel, the AO)", "valid: off with the fragment stage");
     names::require_listed(history_mode_names, v.history, "history");
-    if (v.history != history_mode::off && v.stage != pipeline_stage::compute)
-        fail("history", "needs the compute stage (the history pass writes two images, the AO and the history; a fragment pass writes one)",
-             "valid: off with the fragment stage");
     if (v.history != history_mode::off && v.bent_normals)
         fail("history", "is not available with bent normals (the history holds the AO alone, and would blur the normal's frames apart)",
              "valid: off with -bn, or the variant without -bn");

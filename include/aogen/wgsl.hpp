@@ -267,7 +267,8 @@ struct dawn_pass {
     std::vector<std::vector<uint8_t>> uniforms; // per frame (run_on_dawn runs as many frames as these)
     int albedo_binding = -1; // -1: the pass reads no albedo
     // A history pass (-hist, -histmv): where it reads the history and writes the next (two
-    // rgba16float images of its output's size, cleared, swapped after each frame); -1: none.
+    // rgba16float images of its output's size, cleared, swapped after each frame); -1: none
+    // (history_output_binding -1 beside a history binding: a fragment pass, whose colour target 1 it is).
     int history_binding = -1, history_output_binding = -1;
     int motion_binding = -1; // -1: the pass reads no motion vectors
 };

@@ -52,7 +52,9 @@ inline std::vector<dawn_result> run_variant_frames_on_dawn(const codegen::plan& 
         for (const chain_inputs& in : frames) d.uniforms.push_back(in.uniforms[i]);
         if (reads_albedo(v, ps[i])) d.albedo_binding = webgpu(ps[i], resource_role::gbuffer_albedo);
         if (ps[i] == pass_kind::history) {
-            d.history_binding = webgpu(ps[i], resource_role::history), d.history_output_binding = webgpu(ps[i], resource_role::history_output);
+            // A fragment history pass writes its history as colour target 1, no binding: -1.
+            d.history_binding = webgpu(ps[i], resource_role::history);
+            d.history_output_binding = per_pass == 1 ? webgpu(ps[i], resource_role::history_output) : -1;
             if (v.history == history_mode::motion_vectors) d.motion_binding = webgpu(ps[i], resource_role::motion);
         }
         dawn.push_back(std::move(d));

@@ -45,4 +45,24 @@ TEST_CASE("generate: aogen generate plans each variant once and lays each unifor
     fs::remove_all(out);
 }
 
+TEST_CASE("generate: a history variant's manifest entry names the bindings it reads and where it writes the history, per stage", "[generate][history]")
+{
+    const nlohmann::ordered_json compute = cli::history_entry(variant_from_name("gtao-1x4-half-noblur-gbufworld-std-persp-cs-histmv"));
+    CHECK(compute["format"] == "rgba16f");
+    CHECK(compute["read"]["binding"] == 6);
+    CHECK(compute["read"]["wgsl_binding"] == 8);
+    CHECK(compute["written"]["name"] == "u_history_output");
+    CHECK(compute["written"]["binding"] == 7);
+    CHECK(compute["written"]["wgsl_binding"] == 9);
+    CHECK(compute["motion_vectors"]["binding"] == 8);
+    CHECK(compute["motion_vectors"]["wgsl_binding"] == 10);
+    // A fragment pass writes the history as its second colour attachment (history.glsl's o_history).
+    const nlohmann::ordered_json fragment = cli::history_entry(variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-fs-hist"));
+    CHECK(fragment["written"]["name"] == "o_history");
+    CHECK(fragment["written"]["colour_attachment"] == 1);
+    CHECK(!fragment["written"].contains("binding"));
+    CHECK(!fragment.contains("motion_vectors")); // -hist reads none
+    CHECK(fragment["each_frame"].get<std::string>().find("attachment 1") != std::string::npos);
+}
+
 } // namespace unity_test_generate_plans

@@ -47,7 +47,7 @@ std::vector<variant> broad_set()
 
 } // namespace
 
-TEST_CASE("variant: the history pass is -hist or -histmv, runs after the blur and before the upsample, and is refused by name where it cannot run", "[variant]")
+TEST_CASE("variant: the history pass is -hist or -histmv, runs after the blur and before the upsample in either stage, and is refused by name where it cannot run", "[variant]")
 {
     const variant cam = variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist");
     CHECK(cam.history == history_mode::camera);
@@ -61,7 +61,8 @@ TEST_CASE("variant: the history pass is -hist or -histmv, runs after the blur an
     CHECK(to_name(cam) == "gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist");
     CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist-histmv"), Contains("a second history extra") && Contains("valid: one of hist, histmv"));
     CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist-hist"), Contains("appears twice"));
-    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-fs-hist"), Contains("history: needs the compute stage"));
+    const variant fs = variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-fs-histmv"); // two colour attachments
+    CHECK(passes(fs) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_denoise, pass_kind::history, pass_kind::upsample});
     CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-bn-hist"), Contains("history: is not available with bent normals"));
     CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise-gbufworld-std-persp-cs-wg8x8-hist"), Contains("not in canonical form"));
     variant bad = cam;
@@ -73,7 +74,7 @@ TEST_CASE("variant: the history pass is -hist or -histmv, runs after the blur an
     m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
     m.bent_normals = {false, true};
     m.history = {history_mode::off, history_mode::camera, history_mode::motion_vectors};
-    CHECK(expand(m).size() == 1 + 3 + 1); // fs: off; cs: off, hist, histmv; cs-bn: off
+    CHECK(expand(m).size() == 3 + 3 + 1); // fs and cs: off, hist, histmv; cs-bn: off
 }
 
 TEST_CASE("variant: the default's name is the one docs/design.md spells", "[variant]")

@@ -128,7 +128,7 @@ TEST_CASE("gl: the emitted ESSL 310 (compute) and 300 (fragment) give the SPIR-V
 // its two history images swapped frame after frame (gl::run_frames), against the SPIR-V on one
 // Vulkan binding frame after frame. Every frame's every pixel bit for bit, and the history is
 // used: most texels of the history hold every frame.
-TEST_CASE("gl: a history variant's frames (GLSL 450 and ESSL 310) give the SPIR-V's, frame after frame, bit for bit")
+TEST_CASE("gl: a history variant's frames (GLSL 450 and ESSL 310 compute, ESSL 300 fragment) give the SPIR-V's, frame after frame, bit for bit")
 {
     vulkan::context* vk = shared_context();
     if (!vk) return;
@@ -147,7 +147,8 @@ TEST_CASE("gl: a history variant's frames (GLSL 450 and ESSL 310) give the SPIR-
         if (!gl) return;
         codegen::options o;
         if (api == gl::api::opengl_es) o.output_format = "rgba8"; // ESSL 310 has no r8 image format
-        for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv", "ssao-s16-full-bilateral-gbufworld-std-persp-cs-hist"}) {
+        for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv", "ssao-s16-full-bilateral-gbufworld-std-persp-cs-hist",
+                                 "gtao-1x4-half-noblur-gbufworld-std-persp-fs-histmv"}) { // fragment: ESSL 300, two colour attachments
             INFO(compile::to_name(target) << " " << name);
             const variant v = variant_from_name(name);
             const codegen::plan p = codegen::make_plan(v, under_test(o));

@@ -30,13 +30,6 @@ std::vector<variant> fragment_seeds()
     return out;
 }
 
-// The same axes as `v`, run as a compute variant.
-variant as_compute(variant v)
-{
-    v.stage = pipeline_stage::compute;
-    return v;
-}
-
 // The crease scene the comparisons run on, with its projection.
 struct crease_scene {
     static constexpr int W = 96, H = 64;

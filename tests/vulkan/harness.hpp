@@ -224,6 +224,23 @@ inline std::string first_difference(const std::vector<float>& a, const std::vect
     return "";
 }
 
+// crease(w, h, 0.6, proj) with every pixel's motion vector (mx, my) (NDC, current - previous,
+// y up): the G-buffer a history variant's runners are compared on.
+inline vulkan::gbuffer crease_in_motion(int w, int h, const mat4& proj, float mx, float my)
+{
+    vulkan::gbuffer g = crease(w, h, 0.6f, proj);
+    g.motion.resize(static_cast<size_t>(w) * h * 2);
+    for (size_t i = 0; i < g.motion.size(); i += 2) g.motion[i] = mx, g.motion[i + 1] = my;
+    return g;
+}
+
+// The same axes as `v`, run as a compute variant (what a fragment variant is compared with).
+inline variant as_compute(variant v)
+{
+    v.stage = pipeline_stage::compute;
+    return v;
+}
+
 // `count` frames of settings `still` with the camera moving sideways 0.02 a frame (each frame's
 // previous camera the frame before's; frame 0's its own), each frame its own index: plan `p`'s
 // inputs for a w × h G-buffer -- what a history variant's runners are compared on.

@@ -90,7 +90,8 @@ TEST_CASE("vulkan: history: at a reset, on the first frame and after a turn of 1
     const vulkan::gpu_gbuffer g(*ctx, host);
     for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist", "ssao-s16-half-bilateral-gbufworld-std-persp-cs-histmv",
                              "gtao-2x3-full-noblur-gbufworld-std-persp-cs-hist", "sao-s16-half-box-gbufworld-std-persp-cs-nearest-hist",
-                             "vbao-2x2-half-denoise-recon-std-persp-cs-deint-histmv"}) {
+                             "vbao-2x2-half-denoise-recon-std-persp-cs-deint-histmv", "gtao-2x2-half-denoise-gbufworld-std-persp-fs-hist",
+                             "ssao-s16-full-bilateral-gbufworld-std-persp-fs-histmv"}) {
         INFO(name);
         const variant v = variant_from_name(name);
         const vulkan::chain with = chain_under_test(*ctx, v), twin = chain_under_test(*ctx, twin_of(v));
@@ -118,6 +119,33 @@ TEST_CASE("vulkan: history: at a reset, on the first frame and after a turn of 1
         s.previous_camera = uniforms::camera{turned, proj};
         b.set_uniforms(with.plan().inputs(s, W, H));
         CHECK(first_difference(b.run_once().ao, twin.run(host, s).ao) == "");
+    }
+    require_clean(*ctx);
+}
+
+TEST_CASE("vulkan: history: a fragment history chain (two colour attachments) writes the compute chain's frames and history, frame after frame")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    constexpr int W = 96, H = 64;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const vulkan::gbuffer host = crease_in_motion(W, H, proj, -0.02f * proj[0][0] / 5.0f, 0.0f); // about the camera's move at the crease
+    for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-fs-histmv", "gtao-1x4-half-noblur-gbufworld-std-persp-fs-hist",
+                             "ssao-s16-full-bilateral-gbufworld-std-persp-fs-hist"}) {
+        INFO(name);
+        const variant fragment = variant_from_name(name);
+        const vulkan::chain f = chain_under_test(*ctx, fragment), c = chain_under_test(*ctx, as_compute(fragment));
+        const std::vector<chain_inputs> frames = sideways_frames(f.plan(), settings_for(proj), W, H, 6);
+        std::vector<float> f_history, c_history;
+        const std::vector<vulkan::chain_result> got = spirv_frames(*ctx, f, host, frames, &f_history);
+        const std::vector<vulkan::chain_result> expected = spirv_frames(*ctx, c, host, frames, &c_history);
+        for (size_t k = 0; k < frames.size(); ++k) {
+            INFO("frame " << k);
+            CHECK(first_difference(got[k].ao, expected[k].ao) == "");
+        }
+        CHECK(first_difference(f_history, c_history) == "");
+        const auto [held, surface] = held_of(c_history, float(frames.size()));
+        CHECK(held * 2 > surface); // the history was used: most surface texels hold every frame
     }
     require_clean(*ctx);
 }

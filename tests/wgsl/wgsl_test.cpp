@@ -187,10 +187,9 @@ TEST_CASE("wgsl: Dawn runs a history variant's frames, its history kept, bit for
     if (!ctx) return;
     const int W = 64, H = 40;
     const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
-    vulkan::gbuffer g = crease(W, H, 0.6f, proj);
-    g.motion.assign(size_t(W) * H * 2, 0.0f);
-    for (size_t i = 0; i < g.motion.size(); i += 2) g.motion[i] = -0.01f, g.motion[i + 1] = 0.004f; // NDC, current − previous
-    for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv", "ssao-s16-full-box-gbufworld-std-persp-cs-hist"}) {
+    const vulkan::gbuffer g = crease_in_motion(W, H, proj, -0.01f, 0.004f);
+    for (const char* name : {"gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv", "ssao-s16-full-box-gbufworld-std-persp-cs-hist",
+                             "gtao-1x4-half-noblur-gbufworld-std-persp-fs-histmv"}) { // fragment: two colour targets
         INFO(name);
         const variant v = variant_from_name(name);
         const codegen::plan p = codegen::make_plan(v);

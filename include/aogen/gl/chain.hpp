@@ -17,8 +17,9 @@
 //   templates declare them) the manifest's binding number.
 //   Compute passes write R8 (or RGBA8) images, dispatched over their output size /
 //   pixels_per_invocation, with a memory barrier between passes. Fragment passes draw the
-//   fullscreen triangle (3 vertices, no buffers) into an R8 texture through a framebuffer,
-//   the viewport the output's size, dithering off. Output sizes: the AO target's, the
+//   fullscreen triangle (3 vertices, no buffers) into an R8 texture through a framebuffer
+//   (the history pass into two: the R8 AO and, attachment 1, its RGBA16F history), the
+//   viewport the output's size, dithering off. Output sizes: the AO target's, the
 //   screen's for the upsample. GL's window origin is the lower left, Vulkan's the upper left,
 //   but both write window row k to texture row k and read texel row k there, so
 //   ivec2(gl_FragCoord.xy) names the same texel on both.
@@ -259,17 +260,24 @@ inline void bind_resources(objects& gl, const std::vector<codegen::resource>& re
     }
 }
 
-// A fragment pass: the fullscreen triangle into `output` (w × h).
-inline void draw(objects& gl, GLuint output, int w, int h)
+// A fragment pass: the fullscreen triangle into `output` (w × h) -- and, the history pass,
+// into `history` (the rgba16f history it writes, colour attachment 1) beside it.
+inline void draw(objects& gl, GLuint output, int w, int h, GLuint history = 0)
 {
     glBindFramebuffer(GL_FRAMEBUFFER, gl.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, output, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, history, 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(history ? 2 : 1, buffers);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        fail("gl chain", "an R8 colour attachment is not renderable here", "valid: OpenGL 4.5 or OpenGL ES 3.0 and later");
+        fail("gl chain", history ? "an R8 and an RGBA16F colour attachment are not renderable together here" : "an R8 colour attachment is not renderable here",
+             "valid: OpenGL 4.5, OpenGL ES 3.2, or ES 3.0 with EXT_color_buffer_half_float for a history pass");
     glDisable(GL_DITHER); // on by default: it may perturb the unorm conversion
     glViewport(0, 0, w, h);
     glBindVertexArray(gl.vertex_array());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+    glDrawBuffers(1, buffers);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -347,7 +355,7 @@ inline std::vector<chain_result> run_frames(const context& ctx, const codegen::p
                 glDispatchCompute(detail::groups(out_w, k, shader.workgroup.first), detail::groups(out_h, k, shader.workgroup.second), 1);
                 glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
             } else {
-                detail::draw(gl, outputs[i], out_w, out_h);
+                detail::draw(gl, outputs[i], out_w, out_h, kinds[i] == pass_kind::history ? t.history[1 - t.read] : 0);
             }
             previous = outputs[i];
         }

@@ -129,7 +129,7 @@ public:
             const bool history = i == history_pass_;
             if (history) history_write_barrier(cb, true);
             const auto [w, h] = dispatch_size(i);
-            passes_.record(cb, i, history && parity_ ? history_set_ : sets_[i], framebuffers_[i], w, h);
+            passes_.record(cb, i, history && parity_ ? history_set_ : sets_[i], history && parity_ ? history_framebuffer_ : framebuffers_[i], w, h);
             barrier(cb, out, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
                     use.stage, readers);
             if (history) history_write_barrier(cb, false);
@@ -272,18 +272,20 @@ private:
             fail("vulkan bound chain " + std::string(what), passes_.name() + " has no history pass", "valid: a -hist or -histmv variant");
     }
 
-    // The history the history pass writes this frame, moved to GENERAL before the pass
-    // (`before`) and back to SHADER_READ_ONLY_OPTIMAL after it; the one it reads stays there.
+    // The history the history pass writes this frame, moved to the layout the pass writes in
+    // (GENERAL for compute, COLOR_ATTACHMENT_OPTIMAL for fragment: passes.hpp's output())
+    // before the pass (`before`) and back to SHADER_READ_ONLY_OPTIMAL after it; the one it
+    // reads stays there.
     void history_write_barrier(VkCommandBuffer cb, bool before) const
     {
         const image& written = history_[parity_ ^ 1];
-        const VkPipelineStageFlags stage = passes_.reader_stage();
+        const output_use use = passes_.output();
+        const VkPipelineStageFlags readers = passes_.reader_stage() | VK_PIPELINE_STAGE_TRANSFER_BIT;
+        const VkAccessFlags reads = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
         if (before)
-            barrier(cb, written, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
-                    VK_ACCESS_SHADER_WRITE_BIT, stage | VK_PIPELINE_STAGE_TRANSFER_BIT, stage);
+            barrier(cb, written, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.layout, reads, use.access, readers, use.stage);
         else
-            barrier(cb, written, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
-                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT, stage, stage | VK_PIPELINE_STAGE_TRANSFER_BIT);
+            barrier(cb, written, use.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, use.access, reads, use.stage, readers);
     }
 
     // Records the copy of output `i` into a host buffer, leaving the image where it was
@@ -363,24 +365,27 @@ private:
     void make_outputs(VkCommandBuffer cb)
     {
         const output_use use = passes_.output();
+        const VkImageUsageFlags usage = use.usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        // The history's two images (the engine's, in a renderer), cleared: 0 frames held.
+        if (history_pass_ != no_pass) {
+            const auto [w, h] = sizes_[history_pass_];
+            for (image& img : history_) {
+                img = scope_.make_image(w, h, image_format_of(codegen::history_format), usage);
+                clear_output(cb, img, 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
+            }
+        }
         for (size_t i = 0; i < passes_.size(); ++i) {
             const auto [w, h] = sizes_[i];
-            outputs_.push_back(scope_.make_image(w, h, passes_[i].output_format,
-                                                 use.usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT));
+            outputs_.push_back(scope_.make_image(w, h, passes_[i].output_format, usage));
             clear_output(cb, outputs_.back(), 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
-            framebuffers_.push_back(passes_.make_framebuffer(scope_, outputs_.back(), w, h));
+            // A fragment history pass writes the history image of its parity: a framebuffer each.
+            const bool history = i == history_pass_;
+            framebuffers_.push_back(passes_.make_framebuffer(scope_, i, outputs_.back(), w, h, history ? &history_[1] : nullptr));
+            if (history) history_framebuffer_ = passes_.make_framebuffer(scope_, i, outputs_.back(), w, h, &history_[0]);
             if (!has_raw_) continue;
             raws_.push_back(scope_.make_image(w, h, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT));
             barrier(cb, raws_.back(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, passes_.reader_stage());
-        }
-        // The history's two images (the engine's, in a renderer), cleared: 0 frames held.
-        if (history_pass_ == no_pass) return;
-        const auto [w, h] = sizes_[history_pass_];
-        for (image& img : history_) {
-            img = scope_.make_image(w, h, image_format_of(codegen::history_format),
-                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-            clear_output(cb, img, 0.0f, VK_IMAGE_LAYOUT_UNDEFINED);
         }
     }
 
@@ -597,6 +602,7 @@ private:
     size_t history_pass_ = no_pass;  // the history pass's index, if the chain has one
     image history_[2];               // its two history images: it reads history_[parity_], writes the other
     VkDescriptorSet history_set_ = VK_NULL_HANDLE; // its set for parity 1 (sets_ holds parity 0's)
+    VkFramebuffer history_framebuffer_ = VK_NULL_HANDLE; // a fragment history pass's for parity 1 (framebuffers_ holds parity 0's)
     mutable int parity_ = 0;         // flipped by each record(): a frame
     mutable const raw_counter* counter_;
     mutable std::unique_ptr<raw_counter> own_counter_; // when no counter was given, made on the first count

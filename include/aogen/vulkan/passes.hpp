@@ -10,7 +10,8 @@
 //     fragment  one graphics pipeline per pass: the fullscreen-triangle vertex shader
 //               (compiled once: its text is the same in every pass) and the pass's
 //               fragment shader, into one R8_UNORM colour attachment through a render
-//               pass (Vulkan 1.1: no dynamic rendering) that loads and stores it;
+//               pass (Vulkan 1.1: no dynamic rendering) that loads and stores it -- two
+//               for the history pass, the AO and its RGBA16F history (history.glsl);
 //               make_framebuffer() makes the framebuffer of an output image once, and
 //               record() sets the viewport and scissor to the target size and draws 3
 //               vertices without vertex buffers.
@@ -26,7 +27,7 @@
 //     const aogen::codegen::plan plan = aogen::codegen::make_plan(v);  // v.stage compute or fragment
 //     aogen::vulkan::pass_pipelines p(ctx, plan, aogen::codegen::generate(plan));
 //     for (size_t i = 0; i < p.size(); ++i) { ... p[i].resources, p[i].set_layout ... }
-//     VkFramebuffer fb = p.make_framebuffer(scope, output_image, w, h);   // null for compute
+//     VkFramebuffer fb = p.make_framebuffer(scope, i, output_image, w, h); // null for compute
 //     p.record(cb, i, set, fb, target_w, target_h);
 //
 // ERRORS
@@ -146,15 +147,21 @@ public:
         return {VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT};
     }
 
-    // The framebuffer through which a fragment pass writes `target` (w × h), owned by `sc`;
-    // null for compute passes, which write their storage image directly.
-    VkFramebuffer make_framebuffer(resource_scope& sc, const image& target, int w, int h) const
+    // The framebuffer through which fragment pass `i` writes `target` (w × h), owned by `sc`
+    // -- and, the history pass, `history` (its second attachment: the history it writes);
+    // null for compute passes, which write their storage images directly.
+    VkFramebuffer make_framebuffer(resource_scope& sc, size_t i, const image& target, int w, int h, const image* history = nullptr) const
     {
         if (!fragment()) return VK_NULL_HANDLE;
+        const bool two = passes_[i].kind == pass_kind::history;
+        if (two != (history != nullptr))
+            throw error("vulkan: a framebuffer of " + name_ + "'s " + names::name_of(pass_kind_names, passes_[i].kind, "pass") + " pass " +
+                        (two ? "without its history image" : "with a history image") + " (valid: the history pass writes two, the others one)");
+        const VkImageView views[2] = {target.view, two ? history->view : VK_NULL_HANDLE};
         VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fi.renderPass = render_pass_;
-        fi.attachmentCount = 1;
-        fi.pAttachments = &target.view;
+        fi.renderPass = two ? history_render_pass_ : render_pass_;
+        fi.attachmentCount = two ? 2 : 1;
+        fi.pAttachments = views;
         fi.width = static_cast<uint32_t>(w);
         fi.height = static_cast<uint32_t>(h);
         fi.layers = 1;
@@ -170,7 +177,7 @@ public:
     {
         const pass_pipeline& p = passes_[i];
         const VkPipelineBindPoint point = fragment() ? VK_PIPELINE_BIND_POINT_GRAPHICS : VK_PIPELINE_BIND_POINT_COMPUTE;
-        if (fragment()) begin_render_pass(cb, framebuffer, w, h);
+        if (fragment()) begin_render_pass(cb, p.kind == pass_kind::history ? history_render_pass_ : render_pass_, framebuffer, w, h);
         vkCmdBindPipeline(cb, point, p.pipeline);
         vkCmdBindDescriptorSets(cb, point, p.layout, 0, 1, &set, 0, nullptr);
         if (fragment()) {
@@ -197,7 +204,10 @@ private:
 
     void build(const std::vector<codegen::shader_source>& sources, spirv_cache& cache)
     {
-        if (fragment()) make_render_pass();
+        if (fragment()) {
+            render_pass_ = make_render_pass({ao_format});
+            if (has_history_pass(plan_.variant())) history_render_pass_ = make_render_pass({ao_format, image_format_of(codegen::history_format)});
+        }
         VkShaderModule vertex = VK_NULL_HANDLE;
         for (const codegen::shader_source& s : sources) {
             if (s.stage == shader_stage::vertex) {
@@ -292,30 +302,37 @@ private:
         check(vkCreateComputePipelines(ctx_.device(), VK_NULL_HANDLE, 1, &cpi, nullptr, &p.pipeline), "vkCreateComputePipelines");
     }
 
-    // One colour attachment, loaded (the caller cleared it) and stored, in
-    // COLOR_ATTACHMENT_OPTIMAL before, during and after the pass: the caller's barriers
-    // do every layout transition, as they do for compute.
-    void make_render_pass()
+    // A colour attachment per format (the AO; the history pass's history second), each
+    // loaded (the caller cleared it) and stored, in COLOR_ATTACHMENT_OPTIMAL before, during
+    // and after the pass: the caller's barriers do every layout transition, as for compute.
+    VkRenderPass make_render_pass(const std::vector<VkFormat>& formats) const
     {
-        VkAttachmentDescription a{};
-        a.format = ao_format;
-        a.samples = VK_SAMPLE_COUNT_1_BIT;
-        a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-        a.initialLayout = a.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        const VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        std::vector<VkAttachmentDescription> attachments;
+        std::vector<VkAttachmentReference> refs;
+        for (VkFormat f : formats) {
+            VkAttachmentDescription a{};
+            a.format = f;
+            a.samples = VK_SAMPLE_COUNT_1_BIT;
+            a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+            a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+            a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+            a.initialLayout = a.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+            refs.push_back({static_cast<uint32_t>(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+            attachments.push_back(a);
+        }
         VkSubpassDescription sub{};
         sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-        sub.colorAttachmentCount = 1;
-        sub.pColorAttachments = &ref;
+        sub.colorAttachmentCount = static_cast<uint32_t>(refs.size());
+        sub.pColorAttachments = refs.data();
         VkRenderPassCreateInfo rpi{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-        rpi.attachmentCount = 1;
-        rpi.pAttachments = &a;
+        rpi.attachmentCount = static_cast<uint32_t>(attachments.size());
+        rpi.pAttachments = attachments.data();
         rpi.subpassCount = 1;
         rpi.pSubpasses = &sub;
-        check(vkCreateRenderPass(ctx_.device(), &rpi, nullptr, &render_pass_), "vkCreateRenderPass");
+        VkRenderPass rp;
+        check(vkCreateRenderPass(ctx_.device(), &rpi, nullptr, &rp), "vkCreateRenderPass");
+        return rp;
     }
 
     // Viewport and scissor are dynamic: the target size is known only when a G-buffer is run.
@@ -334,11 +351,15 @@ private:
         rs.lineWidth = 1.0f;
         VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
         ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-        VkPipelineColorBlendAttachmentState att{};
-        att.colorWriteMask = VK_COLOR_COMPONENT_R_BIT; // R8_UNORM has only R
+        const bool history = p.kind == pass_kind::history; // its history is colour attachment 1
+        // R8_UNORM has only R; RGBA16F all four. Without the independentBlend feature every
+        // attachment's state must be the same: all four bits, which R8 ignores past R.
+        VkPipelineColorBlendAttachmentState att[2]{};
+        att[0].colorWriteMask = att[1].colorWriteMask = history ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
+                                                                : VK_COLOR_COMPONENT_R_BIT;
         VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-        cb.attachmentCount = 1;
-        cb.pAttachments = &att;
+        cb.attachmentCount = history ? 2 : 1;
+        cb.pAttachments = att;
         const VkDynamicState dynamic[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
         VkPipelineDynamicStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
         ds.dynamicStateCount = 2;
@@ -354,17 +375,17 @@ private:
         gpi.pColorBlendState = &cb;
         gpi.pDynamicState = &ds;
         gpi.layout = p.layout;
-        gpi.renderPass = render_pass_;
+        gpi.renderPass = history ? history_render_pass_ : render_pass_;
         check(vkCreateGraphicsPipelines(ctx_.device(), VK_NULL_HANDLE, 1, &gpi, nullptr, &p.pipeline), "vkCreateGraphicsPipelines");
     }
 
     // A framebuffer of `target` (destroyed with `sc`), the render pass begun on it and the
     // viewport and scissor set to all of it.
-    void begin_render_pass(VkCommandBuffer cb, VkFramebuffer framebuffer, int w, int h) const
+    void begin_render_pass(VkCommandBuffer cb, VkRenderPass render_pass, VkFramebuffer framebuffer, int w, int h) const
     {
         const VkExtent2D size{static_cast<uint32_t>(w), static_cast<uint32_t>(h)};
         VkRenderPassBeginInfo rbi{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-        rbi.renderPass = render_pass_;
+        rbi.renderPass = render_pass;
         rbi.framebuffer = framebuffer;
         rbi.renderArea = {{0, 0}, size};
         vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
@@ -385,8 +406,10 @@ private:
         passes_.clear();
         for (VkShaderModule m : modules_) vkDestroyShaderModule(d, m, nullptr);
         modules_.clear();
-        if (render_pass_) vkDestroyRenderPass(d, render_pass_, nullptr);
-        render_pass_ = VK_NULL_HANDLE;
+        for (VkRenderPass* rp : {&render_pass_, &history_render_pass_}) {
+            if (*rp) vkDestroyRenderPass(d, *rp, nullptr);
+            *rp = VK_NULL_HANDLE;
+        }
     }
 
     context& ctx_;
@@ -396,7 +419,8 @@ private:
     bool has_ao_output_ = false; // output_format_ is a pass's, not the default
     std::vector<pass_pipeline> passes_;
     std::vector<VkShaderModule> modules_; // every module, the shared vertex shader once
-    VkRenderPass render_pass_ = VK_NULL_HANDLE;
+    VkRenderPass render_pass_ = VK_NULL_HANDLE;         // every fragment pass's but the history's: the AO
+    VkRenderPass history_render_pass_ = VK_NULL_HANDLE; // the history pass's: the AO, then its history
 };
 
 } // namespace aogen::vulkan
