@@ -4,7 +4,8 @@
 // 10⁶ of its size, its camera and AO radius scaled with it, must give the same AO within one
 // step of the 8-bit output (1/255) at every pixel. An absolute length in a shader — a fixed
 // bias, an epsilon compared with a distance — breaks it at one end of the range; the mutants
-// plant three (ctest -L mutants) and this test must fail on each.
+// plant three (ctest -L mutants) and this test must fail on each. A history variant's own
+// checks (suite.hpp's history_failure) run here too, on two cases.
 #include "mutants/mutants.hpp"
 
 #include <aogen_report/run.hpp>
@@ -72,6 +73,25 @@ TEST_CASE("stability: each technique gives the same AO, pixel by pixel, at 1e-6 
         CHECK(r.scale_max <= 1.0 / 255.0);
         CHECK(r.pass);
     }
+}
+
+TEST_CASE("stability: a history variant passes its own checks: planted NaN and infinities dropped, a reset and a turn of 180 degrees this frame alone, another size refused", "[suite]")
+{
+    aogen_report::suite_settings s;
+    s.cases = {aogen_report::builtin_case("image_8x8"), aogen_report::builtin_case("nan_depth_texel")};
+    s.variants = {aogen::variant_from_name("gtao-1x4-half-noblur-gbufworld-std-persp-cs-histmv"),
+                  aogen::variant_from_name("ssao-s16-half-bilateral-gbufworld-std-persp-fs-hist")};
+    s.grid = 8;
+    s.templates = aogen_test::template_under_test;
+    const aogen_report::suite_data d = aogen_report::run_suite(s);
+    REQUIRE(d.cases.size() == 2);
+    for (const aogen_report::suite_case_record& c : d.cases)
+        for (const aogen_report::suite_run& r : c.runs) {
+            INFO(c.c.name << ", " << r.variant << ": " << r.decided_by);
+            REQUIRE(r.ran());
+            CHECK(r.history == "");
+            CHECK(r.pass);
+        }
 }
 
 TEST_CASE("stability: the scale factors are the powers of ten from 1e-6 to 1e6 but 1", "[suite]")

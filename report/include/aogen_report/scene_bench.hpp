@@ -135,6 +135,12 @@ public:
     // The G-buffer the renderer stores for `v`, on the host and uploaded.
     const aogen::vulkan::gbuffer& gbuffer(const aogen::variant& v) { return gbuffers_.host(v); }
     const aogen::vulkan::gpu_gbuffer& gpu(const aogen::variant& v) { return gbuffers_.gpu(v); }
+    // Chain `c` bound to this scene's G-buffer with settings `s`, for a caller's own frame loop.
+    std::unique_ptr<aogen::vulkan::bound_chain> bind(const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& s)
+    {
+        return std::make_unique<aogen::vulkan::bound_chain>(ctx_, c.passes(), gpu(c.plan().variant()), c.plan().inputs(s, width(), height()),
+                                                            c.counter());
+    }
 
     // Chain `c` once on this scene with settings `s` (see WHAT).
     bench_run run(const aogen::vulkan::chain& c, const aogen::vulkan::chain_settings& s, const bench_inputs& inputs = {})

@@ -37,7 +37,9 @@
 #include <aogen/matrix.hpp>
 
 #include <array>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -70,6 +72,7 @@ struct suite_run {
     double changed_reach = 0;             // faults only: the farthest pixel (from its fault) that differs by more than twin_pixel_max
     double scale_max = 0;                 // compare_scales only: the largest difference from the unscaled scene's AO
     double scale_worst = 1;               //   and the factor it was read at
+    std::string history;                  // a history variant's own checks (history_failure): "" passed, else what failed
     bool ran() const { return skipped.empty(); }
 };
 
@@ -94,14 +97,16 @@ struct suite_data {
 };
 
 // The variants the suite runs by default: the default matrix, GTAO's one slice, one step,
-// and fp16 twins of each technique's default (16-bit arithmetic, where view depths past
-// 65504 and the other extremes would show first).
+// fp16 twins of each technique's default (16-bit arithmetic, where view depths past 65504
+// and the other extremes would show first), and two history chains, compute by motion
+// vectors and fragment by the camera (each also runs history_failure's checks).
 inline std::vector<aogen::variant> suite_variants()
 {
     std::vector<aogen::variant> v = aogen::default_matrix();
     for (const char* name : {"gtao-1x1-half-noblur-gbufworld-std-persp-cs", "gtao-1x1-full-noblur-gbufworld-std-persp-cs",
                              "ssao-s16-half-bilateral-gbufworld-std-persp-cs-fp16", "gtao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16",
-                             "gtao-2x2-half-denoise-gbufworld-std-persp-cs-fp16", "vbao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16"})
+                             "gtao-2x2-half-denoise-gbufworld-std-persp-cs-fp16", "vbao-2x3-half-bilateral-gbufworld-std-persp-cs-fp16",
+                             "gtao-1x4-half-noblur-gbufworld-std-persp-cs-histmv", "gtao-2x2-half-denoise-gbufworld-std-persp-fs-hist"})
         aogen::append_unique(v, aogen::variant_from_name(name));
     return v;
 }
@@ -221,6 +226,63 @@ inline one_run run_once(chain_cache& chains, const aogen::variant& v, scene_benc
     return r;
 }
 
+// A history variant's own checks on a case's scene, a still camera, one binding (history.glsl):
+// after two frames a NaN, an infinity and a negative infinity are planted in every 7th history
+// texel, and the next frame must drop them (no raw NaN or infinity, a history written with no
+// texel that is not finite, and its output and history those of the same frame with those
+// texels holding no frame, bit for bit); a reset, and a camera turned 180 degrees
+// since the last frame, must each give frame 0's output bit for bit (this frame alone); and a
+// history of another size must be refused by name. "" when all hold, else the first that failed.
+inline std::string history_failure(chain_cache& chains, const aogen::variant& v, scene_bench& bench)
+{
+    const aogen::vulkan::chain& c = chains.get(v);
+    aogen::vulkan::chain_settings s = default_settings(v, bench.scene());
+    const std::unique_ptr<aogen::vulkan::bound_chain> b = bench.bind(c, s);
+    const auto frame = [&](uint32_t f, bool reset, const std::optional<aogen::uniforms::camera>& previous) {
+        s.frame = f, s.reset_history = reset, s.previous_camera = previous;
+        b->set_uniforms(c.plan().inputs(s, bench.width(), bench.height()));
+        return b->run_once();
+    };
+    const aogen::vulkan::chain_result first = b->run_once();
+    frame(1, false, std::nullopt);
+    // Every 7th texel planted, and the same texels instead holding no frame (all 0): the pass
+    // must drop a texel that is not finite exactly as one that holds nothing.
+    std::vector<float> planted = b->read_history(), emptied = planted;
+    const float inf = std::numeric_limits<float>::infinity();
+    for (size_t t = 0; 4 * t < planted.size(); t += 7) { // t % 3 takes 0, 1, 2 in turn
+        float* texel = &planted[4 * t];
+        if (t % 3 == 0) texel[0] = std::nanf(""); // the AO
+        if (t % 3 == 1) texel[0] = inf;
+        if (t % 3 == 2) texel[1] = -inf;          // the depth code
+        std::fill_n(&emptied[4 * t], 4, 0.0f);
+    }
+    const auto [tw, th] = c.plan().target_size(bench.width(), bench.height());
+    b->load_history(tw, th, planted);
+    const aogen::vulkan::chain_result after = frame(2, false, std::nullopt);
+    const std::vector<float> written = b->read_history();
+    b->load_history(tw, th, emptied);
+    const aogen::vulkan::chain_result after_empty = frame(2, false, std::nullopt);
+    for (const aogen::vulkan::raw_counts& k : after.raw)
+        if (k.nan || k.inf) return "history: a planted NaN or infinity reached a pass's raw values";
+    for (float h : written)
+        if (!std::isfinite(h)) return "history: a planted NaN or infinity outlived its frame";
+    if (after.ao != after_empty.ao || written != b->read_history())
+        return "history: a planted NaN or infinity was not dropped as a texel that holds no frame";
+    if (frame(0, true, std::nullopt).ao != first.ao) return "history: a reset is not frame 0's output bit for bit";
+    aogen::uniforms::camera turned = s.camera;
+    aogen::mat4 half_turn; // 180 degrees about the view's y axis
+    half_turn.columns[0] = {-1, 0, 0, 0}, half_turn.columns[2] = {0, 0, -1, 0};
+    turned.world_to_view = half_turn * s.camera.world_to_view;
+    if (frame(0, false, turned).ao != first.ao) return "history: after a turn of 180 degrees the output is not this frame's alone";
+    try {
+        b->load_history(tw + 1, th, std::vector<float>(size_t(tw + 1) * th * 4, 0.0f));
+        return "history: a history of another size was taken";
+    } catch (const aogen::error& e) {
+        if (std::string(e.what()).find("history") == std::string::npos) return "history: another size refused without naming the history";
+    }
+    return "";
+}
+
 // The reference's valid pixels without the faulted ones (the shader answers 1 there by design).
 inline std::vector<uint8_t> scored_pixels(const reference& truth, const std::vector<uint8_t>& faulted)
 {
@@ -290,6 +352,10 @@ inline void judge(suite_run& r, const stability_criterion& k, const std::vector<
             r.decided_by = b;
             return;
         }
+    }
+    if (!r.history.empty()) {
+        r.decided_by = r.history;
+        return;
     }
     if (r.background_not_one) {
         r.decided_by = std::to_string(r.background_not_one) + " of " + std::to_string(r.background_pixels) + " background/fault pixels not exactly 1";
@@ -399,6 +465,7 @@ inline suite_data run_suite(const suite_settings& settings)
                     }
                     r.depth_mean = std::max(r.depth_mean, sum / double(std::max<size_t>(1, o.out().ao.size())));
                 }
+            if (has_history_pass(v)) r.history = detail::history_failure(chains, v, scene);
             // Raw NaN, Inf and excess are judged over every run of the variant on the case.
             std::vector<aogen::vulkan::raw_counts> per_pass = a.out().raw;
             for (const auto& [k, p] : scaled) {
