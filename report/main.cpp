@@ -8,7 +8,7 @@
 // Writes into --out: report.html (the whole report as one self-contained page: the plot,
 // a sortable, filterable table, every variant's images on every scene), report.md (the
 // tables), results.json (every number), error_vs_time.svg (the plot, drawn here; no
-// Python) and strips/<scene>.png (reference | variant | |error| for the Pareto-optimal
+// Python), motion_vs_time.svg (the plot in motion, with the report in motion) and strips/<scene>.png (reference | variant | |error| for the Pareto-optimal
 // variants, each row labelled). The set is written after every scene (marked partial
 // until the last), all files or none, so an interrupted run keeps what it measured.
 // Progress goes to stderr. A bad argument, scene or variant is one line on stderr and
@@ -124,6 +124,7 @@ void add_report(aogen::tools::file_set& set, const aogen_report::report_data& d,
     set.add("report.md", aogen_report::report_markdown(d, meta, strips));
     set.add("report.html", aogen_report::report_page(d, meta, &images));
     set.add("error_vs_time.svg", aogen_report::error_time_svg(aogen_report::plot_points(d), aogen_report::plot_title(d), d.frames));
+    if (!d.motion.empty()) set.add("motion_vs_time.svg", aogen_report::motion_time_svg(aogen_report::motion_plot_points(d), aogen_report::motion_plot_title(d)));
 }
 
 // Where a report's `total` seconds went, for its last line: the phases, the summaries and

@@ -6,6 +6,7 @@
 //     standing still every pixel's age is the frame's index;
 //   - a box sliding over the plane uncovers a column a frame: the truth's disocclusion.
 #include <aogen_report/motion_metrics.hpp>
+#include <aogen_report/page.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -122,6 +123,40 @@ TEST_CASE("motion: a box sliding one pixel a frame over the plane uncovers one c
                 REQUIRE(ages[size_t(f)][size_t(y) * 20 + c] == expected);
             }
         }
+}
+
+TEST_CASE("report: the plot in motion has a point per variant: its error the mean over its scenes, its time their median, and the front among them")
+{
+    report_data d;
+    d.device = "a device";
+    const std::string cheap = "gtao-1x4-half-noblur-gbufworld-std-persp-cs", held = cheap + "-histmv", dear = "gtao-4x4-half-noblur-gbufworld-std-persp-fs";
+    const auto record = [](const std::string& v, const std::string& scene, double error, double ms) {
+        motion_record r;
+        r.variant = v, r.scene = scene, r.error = error, r.ms = ms;
+        return r;
+    };
+    d.motion = {record(cheap, "room", 0.10, 2.0), record(held, "room", 0.05, 2.5), record(dear, "room", 0.05, 8.0),
+                record(cheap, "stairs", 0.08, 3.0), record(held, "stairs", 0.03, 3.5), record(dear, "stairs", 0.07, 6.0),
+                record(cheap, "engine", 0.12, 1.0), record(held, "engine", 0.07, 1.5), record(dear, "engine", 0.06, NAN)};
+    const std::vector<plot_point> p = motion_plot_points(d);
+    REQUIRE(p.size() == 3);
+    CHECK(p[0].name == cheap);
+    CHECK(p[0].error_motion == Approx(0.10));
+    CHECK(p[0].ms == 2.0);                     // the median of 2, 3, 1
+    CHECK(p[1].error_motion == Approx(0.05));
+    CHECK(p[1].ms == 2.5);
+    CHECK(p[2].ms == 7.0);                     // the median of the two timed scenes
+    CHECK(p[2].stage == "fragment");
+    CHECK(p[0].pareto_motion);                 // the fastest
+    CHECK(p[1].pareto_motion);                 // the most accurate
+    CHECK(p[2].error_motion == Approx(0.06));
+    CHECK_FALSE(p[2].pareto_motion);           // less accurate than the history variant, and slower
+    const std::string svg = motion_time_svg(p, motion_plot_title(d));
+    size_t points = 0;
+    for (size_t at = svg.find("class=\"point\""); at != std::string::npos; at = svg.find("class=\"point\"", at + 1)) ++points;
+    CHECK(points == 3);
+    CHECK(svg.find("data-panel=\"motion\"") != std::string::npos);
+    CHECK(svg.find(held + ": 2.500 ms, RMSE 0.0500") != std::string::npos);
 }
 
 } // namespace unity_motion_test

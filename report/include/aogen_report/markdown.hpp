@@ -103,7 +103,8 @@ inline void write_feature_saving(std::ostream& md, const report_data& d)
 inline void write_motion(std::ostream& md, const report_data& d)
 {
     if (d.motion.empty()) return;
-    md << "\n## In motion\n\n" << motion_about(d) << "\n\n" << markdown_table(motion_table(d)) << "\n" << markdown_table(motion_scenes_table(d));
+    md << "\n## In motion\n\n" << motion_about(d) << "\n\n![error in motion against time](motion_vs_time.svg)\n\n" << markdown_table(motion_table(d)) << "\n"
+       << markdown_table(motion_scenes_table(d));
 }
 
 // The runs that did not happen, grouped by why.

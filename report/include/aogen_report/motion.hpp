@@ -39,6 +39,7 @@
 #include "settings.hpp"
 
 #include <aogen/vulkan/chain.hpp>
+#include <aogen/vulkan/timing.hpp>
 #include <aogen_scenes/gbuffer.hpp>
 #include <aogen_scenes/scene.hpp>
 
@@ -116,8 +117,10 @@ public:
 
     // Chain `c` along the path, one binding frame after frame (its history kept), scored;
     // its history pass with the scene's settings (the constructor's), or `history`.
-    motion_record score(const aogen::vulkan::chain& c) { return score(c, history_); }
-    motion_record score(const aogen::vulkan::chain& c, const aogen::history_params& history)
+    // With motion_options::timed, and `timing`, the chain is then timed on the path's last
+    // frame, its history kept (the report's protocol; motion_record::ms).
+    motion_record score(const aogen::vulkan::chain& c, const aogen::vulkan::timing_options& timing = {}) { return score(c, history_, timing); }
+    motion_record score(const aogen::vulkan::chain& c, const aogen::history_params& history, const aogen::vulkan::timing_options& timing = {})
     {
         const aogen::codegen::plan& p = c.plan();
         const aogen::variant& v = p.variant();
@@ -141,6 +144,10 @@ public:
         }
         motion_record r = motion_metrics(scored, options_.ghost_window);
         r.variant = p.name(), r.scene = scene_.name;
+        if (options_.timed) {
+            const aogen::vulkan::timing_result t = aogen::vulkan::time_chains(ctx_, {bound.get()}, timing);
+            if (!t.chains.empty()) r.ms = t.chains[0].total.median;
+        }
         return r;
     }
 

@@ -37,6 +37,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -53,6 +55,49 @@ inline std::vector<plot_point> plot_points(const report_data& d)
                           v.rmse_calibrated, v.rmse_accumulated, v.pareto, v.pareto_calibrated, v.pareto_accumulated});
     }
     return points;
+}
+
+// The plot in motion's points: one per variant run in motion, in the order first run, its
+// error in motion the mean over its scenes and its time the median of its scenes' (NaN
+// where none was timed); the Pareto front among them. data-variant is that order.
+inline std::vector<plot_point> motion_plot_points(const report_data& d)
+{
+    std::vector<plot_point> points;
+    std::vector<std::vector<double>> times;
+    std::vector<size_t> scenes;
+    for (const motion_record& r : d.motion) {
+        size_t i = 0;
+        while (i < points.size() && points[i].name != r.variant) ++i;
+        if (i == points.size()) {
+            const aogen::variant v = aogen::variant_from_name(r.variant);
+            plot_point p;
+            p.variant = i, p.name = r.variant, p.label = plot_label(r.variant), p.technique = aogen::to_name(v.tech), p.stage = aogen::to_name(v.stage);
+            p.error_motion = 0;
+            points.push_back(p), times.emplace_back(), scenes.push_back(0);
+        }
+        points[i].error_motion += r.error, scenes[i] += 1;
+        if (std::isfinite(r.ms)) times[i].push_back(r.ms);
+    }
+    for (size_t i = 0; i < points.size(); ++i) {
+        points[i].error_motion /= double(scenes[i]);
+        std::vector<double>& t = times[i];
+        std::sort(t.begin(), t.end());
+        if (!t.empty()) points[i].ms = t.size() % 2 ? t[t.size() / 2] : 0.5 * (t[t.size() / 2 - 1] + t[t.size() / 2]);
+    }
+    for (plot_point& p : points) {
+        p.pareto_motion = std::isfinite(p.ms);
+        for (const plot_point& q : points)
+            if (&q != &p && std::isfinite(q.ms) && q.ms <= p.ms && q.error_motion <= p.error_motion && (q.ms < p.ms || q.error_motion < p.error_motion))
+                p.pareto_motion = false;
+    }
+    return points;
+}
+
+// The plot in motion's title.
+inline std::string motion_plot_title(const report_data& d)
+{
+    const motion_options& o = d.motion_settings;
+    return "aogen in motion: error over frames " + std::to_string(o.first_scored) + "–" + std::to_string(o.frames - 1) + " against run time — " + d.device;
 }
 
 // The plot's title: what was measured, on what.
@@ -325,7 +370,8 @@ inline std::string report_page(const report_data& d, const report_meta& meta, pa
              << html_table(feature_saving_table(d)) << "<p>" << html_from_markdown(feature_saving_left_out(d)) << "</p>\n";
     html << "</section>\n";
     if (!d.motion.empty())
-        html << "<section id=\"motion\">\n<h2>In motion</h2>\n<p>" << html_from_markdown(motion_about(d)) << "</p>\n" << html_table(motion_table(d))
+        html << "<section id=\"motion\">\n<h2>In motion</h2>\n<p>" << html_from_markdown(motion_about(d)) << "</p>\n<figure id=\"motion-plot\">"
+             << motion_time_svg(motion_plot_points(d), motion_plot_title(d)) << "</figure>\n" << html_table(motion_table(d))
              << html_table(motion_scenes_table(d)) << "</section>\n";
     const std::vector<std::string> not_run = not_run_lines(d);
     if (!not_run.empty()) html << "<section id=\"not-run\">\n<h2>Not run</h2>\n" << html_list(not_run) << "</section>\n";

@@ -27,7 +27,8 @@
 //                         selected_rmse, everything_on_rmse, left_out}],
 //     "history": {blend, clamp, range, widening, gamma, depth_tolerance},  // the history pass's settings (--history)
 //     "motion": {frames, first_scored, ghost_window, rays_per_pixel,     // the report in motion (motion.hpp)
-//                runs: [{variant, scene, error, ghosting, flicker, ghost_pixels, flicker_pixels, rmse: [per scored frame]}]} }
+//                runs: [{variant, scene, error, ghosting, flicker, ghost_pixels, flicker_pixels, rmse: [per scored frame],
+//                        ms (one frame's time on the last frame; null where not timed)}]} }
 // "raw" counts what each pass computed before its finite/range guard (diagnostics.hpp);
 // "non_finite" of the metrics counts the shipped output, which the guard keeps finite.
 #pragma once
@@ -128,7 +129,8 @@ inline nlohmann::json motion_json(const report_data& d)
     nlohmann::json runs = nlohmann::json::array();
     for (const motion_record& r : d.motion)
         runs.push_back({{"variant", r.variant}, {"scene", r.scene}, {"error", r.error}, {"ghosting", r.ghosting}, {"flicker", r.flicker},
-                        {"ghost_pixels", r.ghost_pixels}, {"flicker_pixels", r.flicker_pixels}, {"rmse", r.rmse}});
+                        {"ghost_pixels", r.ghost_pixels}, {"flicker_pixels", r.flicker_pixels}, {"rmse", r.rmse},
+                        {"ms", std::isfinite(r.ms) ? nlohmann::json(r.ms) : nlohmann::json()}});
     return {{"frames", o.frames}, {"first_scored", o.first_scored}, {"ghost_window", o.ghost_window}, {"rays_per_pixel", o.grid * o.grid}, {"runs", runs}};
 }
 

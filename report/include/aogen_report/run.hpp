@@ -427,6 +427,8 @@ namespace detail {
 inline void run_motion(aogen::vulkan::context& ctx, const report_settings& settings, report_data& out)
 {
     out.motion_settings = settings.motion;
+    motion_options o = settings.motion;
+    o.timed = true; // each chain's time beside its error: the plot's panel in motion
     std::vector<std::unique_ptr<aogen::vulkan::chain>> chains;
     for (const aogen::variant& v : settings.motion_variants) chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, aogen::codegen::make_plan(v)));
     for (const aogen::scenes::scene& asked : settings.motion_scenes) {
@@ -434,9 +436,9 @@ inline void run_motion(aogen::vulkan::context& ctx, const report_settings& setti
         settings.progress("in motion: " + asked.name + ", " + std::to_string(std::min(settings.motion.frames, aogen::scenes::frame_count(asked))) +
                           " frames (" + std::to_string(settings.motion.grid * settings.motion.grid) + " rays per pixel from frame " +
                           std::to_string(settings.motion.first_scored) + "), " + std::to_string(chains.size()) + " variants");
-        motion_scene m(ctx, sized(asked, settings), settings.motion, settings.history);
+        motion_scene m(ctx, sized(asked, settings), o, settings.history);
         for (const auto& c : chains)
-            if (cannot_run(c->plan().variant(), m.scene()).empty()) out.motion.push_back(m.score(*c));
+            if (cannot_run(c->plan().variant(), m.scene()).empty()) out.motion.push_back(m.score(*c, out.timing));
     }
 }
 

@@ -44,11 +44,13 @@ struct plot_point {
     double ms = NAN, ms_p10 = NAN, ms_p90 = NAN;
     double error = NAN, error_calibrated = NAN, error_accumulated = NAN;
     bool pareto = false, pareto_calibrated = false, pareto_accumulated = false;
+    double error_motion = NAN; // the report in motion's error (motion_time_svg)
+    bool pareto_motion = false;
 };
 
-// Which error a panel plots: the single frame's at default parameters, calibrated, or the
-// mean of the report's frames.
-enum class plot_error { plain, calibrated, accumulated };
+// Which error a panel plots: the single frame's at default parameters, calibrated, the
+// mean of the report's frames, or the error in motion.
+enum class plot_error { plain, calibrated, accumulated, motion };
 
 // The short name a label shows: the tokens that tell the default matrix apart
 // ("gtao-2x2-half-denoise-gbufworld-std-persp-cs" → "gtao-2x2-half-denoise").
@@ -161,15 +163,33 @@ public:
 
     double error(const plot_point& p) const
     {
-        return kind_ == plot_error::calibrated ? p.error_calibrated : kind_ == plot_error::accumulated ? p.error_accumulated : p.error;
+        switch (kind_) {
+        case plot_error::calibrated: return p.error_calibrated;
+        case plot_error::accumulated: return p.error_accumulated;
+        case plot_error::motion: return p.error_motion;
+        case plot_error::plain: break;
+        }
+        return p.error;
     }
     bool pareto(const plot_point& p) const
     {
-        return kind_ == plot_error::calibrated ? p.pareto_calibrated : kind_ == plot_error::accumulated ? p.pareto_accumulated : p.pareto;
+        switch (kind_) {
+        case plot_error::calibrated: return p.pareto_calibrated;
+        case plot_error::accumulated: return p.pareto_accumulated;
+        case plot_error::motion: return p.pareto_motion;
+        case plot_error::plain: break;
+        }
+        return p.pareto;
     }
     const char* panel_name() const
     {
-        return kind_ == plot_error::calibrated ? "calibrated" : kind_ == plot_error::accumulated ? "accumulated" : "default";
+        switch (kind_) {
+        case plot_error::calibrated: return "calibrated";
+        case plot_error::accumulated: return "accumulated";
+        case plot_error::motion: return "motion";
+        case plot_error::plain: break;
+        }
+        return "default";
     }
     bool shown(const plot_point& p) const { return std::isfinite(p.ms) && p.ms > 0 && std::isfinite(error(p)); }
 
@@ -311,6 +331,16 @@ inline void draw_legend(std::ostream& svg, const std::vector<plot_point>& points
         << num(y + 4) << "\" font-size=\"11\">Pareto front (labelled where room)</text>\n";
 }
 
+// A plot's <svg> element of class `cls` (width × height), its background and `title` over it.
+inline void open_plot(std::ostream& svg, const char* cls, double width, double height, const std::string& title)
+{
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"" << cls << "\" width=\"" << num(width) << "\" height=\"" << num(height)
+        << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"DejaVu Sans, Arial, sans-serif\" role=\"img\" aria-label=\""
+        << html_escape(title) << "\">\n";
+    svg << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
+    svg << "<text x=\"" << num(width / 2) << "\" y=\"18\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">" << html_escape(title) << "</text>\n";
+}
+
 } // namespace detail
 
 // The whole plot: `title` over the panels, the legend under them. With `frames` > 1 a third
@@ -320,17 +350,27 @@ inline std::string error_time_svg(const std::vector<plot_point>& points, const s
     const int panels = frames > 1 ? 3 : 2;
     const double width = panels * detail::plot_panel_width, height = detail::plot_title_height + detail::plot_panel_height + detail::plot_legend_height;
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"error-time-plot\" width=\"" << detail::num(width) << "\" height=\""
-        << detail::num(height) << "\" viewBox=\"0 0 " << detail::num(width) << " " << detail::num(height)
-        << "\" font-family=\"DejaVu Sans, Arial, sans-serif\" role=\"img\" aria-label=\"" << html_escape(title) << "\">\n";
-    svg << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
-    svg << "<text x=\"" << detail::num(width / 2) << "\" y=\"18\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">" << html_escape(title) << "</text>\n";
+    detail::open_plot(svg, "error-time-plot", width, height, title);
     detail::plot_panel(points, plot_error::plain, 0, detail::plot_title_height).draw(svg, "Default parameters");
     detail::plot_panel(points, plot_error::calibrated, detail::plot_panel_width, detail::plot_title_height)
         .draw(svg, "Calibrated (ao^p, p fitted on the other scenes)");
     if (panels == 3)
         detail::plot_panel(points, plot_error::accumulated, 2 * detail::plot_panel_width, detail::plot_title_height)
             .draw(svg, "After " + std::to_string(frames) + " frames (their plain mean, still camera)");
+    detail::draw_legend(svg, points, detail::plot_title_height + detail::plot_panel_height);
+    svg << "</svg>\n";
+    return svg.str();
+}
+
+// The report in motion's plot: one panel of each motion variant's error in motion (mean over
+// its scenes, plot_point::error_motion) against its time per frame, its Pareto front
+// (pareto_motion) drawn as error_time_svg draws one.
+inline std::string motion_time_svg(const std::vector<plot_point>& points, const std::string& title)
+{
+    const double width = detail::plot_panel_width, height = detail::plot_title_height + detail::plot_panel_height + detail::plot_legend_height;
+    std::ostringstream svg;
+    detail::open_plot(svg, "motion-time-plot", width, height, title);
+    detail::plot_panel(points, plot_error::motion, 0, detail::plot_title_height).draw(svg, "In motion (each scored frame against its own truth)");
     detail::draw_legend(svg, points, detail::plot_title_height + detail::plot_panel_height);
     svg << "</svg>\n";
     return svg.str();
