@@ -8,10 +8,11 @@
 //   once, everything a frame loop keeps: device-local uniform buffers and noise image, one
 //   output image per pass (R8_UNORM, or R8G8B8A8_UNORM for rgba8 passes: passes.hpp) (pass i writes output i, pass i + 1 samples it), the
 //   framebuffers of fragment passes, one descriptor set per pass. Then:
-//     record(cb, timestamps)  records the whole chain into a command buffer, as many times
-//                             as the caller likes (timing.hpp records it hundreds of times
-//                             back to back); with a query pool, one timestamp before the
-//                             first pass and one after each pass;
+//     record(cb, timestamps)  records the whole chain -- one frame -- into a command buffer,
+//                             as many times as the caller likes (timing.hpp records it
+//                             hundreds of times back to back); with a query pool, one
+//                             timestamp before the first pass and one after each pass;
+//     next_frame()            a history chain's next frame: its two history images swap;
 //     run_once(clear)         fills every output with `clear`, runs the chain once and reads
 //                             back the last output as floats, with each pass's GPU time —
 //                             and, for passes built with codegen::options::diagnostics, what
@@ -135,7 +136,14 @@ public:
             if (history) history_write_barrier(cb, false);
             if (ts.pool) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, ts.pool, ts.first + static_cast<uint32_t>(i + 1));
         }
-        // The history written is the one the next frame reads: each record() is one frame.
+    }
+
+    // The next frame: the history the last frame wrote becomes the one record() reads (a
+    // history chain's two images swap; nothing else changes). run_once() calls it after its
+    // frame; a caller's own frame loop calls it after submitting each record(). The timing
+    // loops record one frame over and over without it: each iteration that frame again.
+    void next_frame()
+    {
         if (history_pass_ != no_pass) parity_ ^= 1;
     }
 
@@ -211,8 +219,9 @@ public:
         write_sets(g);
     }
 
-    // Every output filled with `clear`, the chain run once, the last output read back.
-    chain_result run_once(float clear = 0.0f) const
+    // Every output filled with `clear`, the chain run once -- one frame: next_frame() after
+    // it --, the last output read back.
+    chain_result run_once(float clear = 0.0f)
     {
         resource_scope sc(ctx_);
         VkCommandBuffer cb = sc.begin_commands();
@@ -223,6 +232,7 @@ public:
         const buffer ao = record_read_back(sc, cb, last);
         const buffer counts = has_raw_ ? count_raw(sc, cb) : buffer{};
         sc.submit(cb);
+        next_frame();
 
         chain_result out;
         out.width = width(), out.height = height();
@@ -603,7 +613,7 @@ private:
     image history_[2];               // its two history images: it reads history_[parity_], writes the other
     VkDescriptorSet history_set_ = VK_NULL_HANDLE; // its set for parity 1 (sets_ holds parity 0's)
     VkFramebuffer history_framebuffer_ = VK_NULL_HANDLE; // a fragment history pass's for parity 1 (framebuffers_ holds parity 0's)
-    mutable int parity_ = 0;         // flipped by each record(): a frame
+    int parity_ = 0;                 // which history record() reads: flipped by next_frame()
     mutable const raw_counter* counter_;
     mutable std::unique_ptr<raw_counter> own_counter_; // when no counter was given, made on the first count
 };

@@ -424,20 +424,30 @@ namespace detail {
 
 // The report in motion: every motion variant along every scene with a path, at the report's
 // resolution; a variant a scene's renderer cannot run is left out of that scene.
-inline void run_motion(aogen::vulkan::context& ctx, const report_settings& settings, report_data& out)
+inline void run_motion(aogen::vulkan::context& ctx, const report_settings& settings, report_data& out, const compiled_records& compiled)
 {
     out.motion_settings = settings.motion;
     motion_options o = settings.motion;
     o.timed = true; // each chain's time beside its error: the plot's panel in motion
-    std::vector<std::unique_ptr<aogen::vulkan::chain>> chains;
-    for (const aogen::variant& v : settings.motion_variants) chains.push_back(std::make_unique<aogen::vulkan::chain>(ctx, aogen::codegen::make_plan(v)));
+    // Each variant's shipped chain: the still part's where it ran there, else compiled here.
+    std::vector<std::unique_ptr<aogen::vulkan::chain>> own;
+    std::vector<const aogen::vulkan::chain*> chains;
+    for (const aogen::variant& v : settings.motion_variants) {
+        const aogen::vulkan::chain* found = nullptr;
+        for (size_t i = 0; i < out.variants.size() && !found; ++i)
+            if (out.variants[i].v == v) found = compiled.variants[i].shipped.get();
+        for (size_t i = 0; i < out.twins.size() && !found; ++i)
+            if (out.twins[i].v == v) found = compiled.twins[i].shipped.get();
+        if (!found) own.push_back(std::make_unique<aogen::vulkan::chain>(ctx, aogen::codegen::make_plan(v))), found = own.back().get();
+        chains.push_back(found);
+    }
     for (const aogen::scenes::scene& asked : settings.motion_scenes) {
         if (aogen::scenes::frame_count(asked) < 2) continue;
         settings.progress("in motion: " + asked.name + ", " + std::to_string(std::min(settings.motion.frames, aogen::scenes::frame_count(asked))) +
                           " frames (" + std::to_string(settings.motion.grid * settings.motion.grid) + " rays per pixel from frame " +
                           std::to_string(settings.motion.first_scored) + "), " + std::to_string(chains.size()) + " variants");
         motion_scene m(ctx, sized(asked, settings), o, settings.history);
-        for (const auto& c : chains)
+        for (const aogen::vulkan::chain* c : chains)
             if (cannot_run(c->plan().variant(), m.scene()).empty()) out.motion.push_back(m.score(*c, out.timing));
     }
 }
@@ -501,7 +511,7 @@ inline report_data run_report(const report_settings& settings)
     }
     if (!settings.motion_variants.empty()) {
         const auto motion_start = clock::now();
-        detail::run_motion(ctx, settings, out);
+        detail::run_motion(ctx, settings, out, compiled);
         out.phases.motion = detail::seconds_since(motion_start);
     }
     return out;
