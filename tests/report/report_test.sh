@@ -47,7 +47,7 @@ run)
       --validation --out "$work/r$run" 2>"$work/progress$run" || { fail "run $run exited non-zero"; cat "$work/progress$run"; }
   done
   grep -q "\[scene 3/3\] stairs: timing" "$work/progress1" || fail "no progress on stderr"
-  for f in report.html report.md results.json error_vs_time.svg; do [ -s "$work/r1/$f" ] || fail "$f missing"; done
+  for f in report.html report.md results.json error_vs_time.svg motion_vs_time.svg; do [ -s "$work/r1/$f" ] || fail "$f missing"; done
   [ -e "$work/r1/error_vs_time.png" ] && fail "error_vs_time.png is made (the plot is SVG, drawn without Python)"
   AOGEN_PAGE="$work/r1/report.html" "$page_tests" "page: a report made by aogen_report" >"$work/page" 2>&1 ||
     { fail "report.html in chromium"; tail -30 "$work/page"; }
@@ -66,7 +66,9 @@ assert a["rays_per_pixel"] == 1024 and len(a["scenes"]) == 3 and len(a["variants
 m = a["motion"]
 assert m["frames"] == 12 and m["first_scored"] == 6 and m["rays_per_pixel"] == 256, m
 assert [r["scene"] for r in m["runs"]] == ["stairs"] * 8, [r["scene"] for r in m["runs"]]
-assert m == b["motion"], "the report in motion differs between two runs"
+untimed = lambda motion: [{k: v for k, v in r.items() if k != "ms"} for r in motion["runs"]]  # everything but the times
+assert untimed(m) == untimed(b["motion"]), "the report in motion differs between two runs"
+assert all(r["ms"] is not None and r["ms"] > 0 for r in m["runs"]), "a chain in motion was not timed"
 by = {r["variant"]: r for r in m["runs"]}
 for name, r in by.items():
     assert len(r["rmse"]) == 6 and all(0 <= r[k] < 1 for k in ("error", "ghosting", "flicker")), r
