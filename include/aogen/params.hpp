@@ -571,10 +571,10 @@ struct history_params {
     // Default 0.1 (UE5's AmbientOcclusionTemporalBlendWeight, three.js's alpha; HDRP's
     // feedback 0.85..0.95 is 0.05..0.15 here), chosen in motion (aogen_history_sweep,
     // BENCHMARKS.md § 2026-12-07 (session 8)) over 0.05 and 0.2 for four chains with the pass
-    // (gtao-1x4- and 2x2-half, -noblur and -denoise): 0.2 has an error in motion 1.0-1.5 %
-    // lower for each, 0.1 a flicker 8-12 % lower -- within the 0.25x of the twin's that
-    // gtao-1x4-half-noblur-histmv reaches only at 0.1. 0.05 acts as 0.1 over the report's 12
-    // frames (w = 1 / (n + 1) stays above it).
+    // (gtao-1x4- and 2x2-half, -noblur and -denoise): 0.2 has an error in motion 0.9-1.7 %
+    // lower for each, 0.1 a flicker 2-12 % lower -- within the 0.25x of the twin's that
+    // gtao-1x4-half-noblur-histmv reaches only at 0.1 (0.23x; 0.26x at 0.2). 0.05 acts as
+    // 0.1 over the report's 12 frames (w = 1 / (n + 1) stays above it).
     static constexpr float_range blend_range{0.01f, 1.0f, false};
     float blend = 0.1f;
 
