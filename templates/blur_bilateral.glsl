@@ -51,7 +51,7 @@ float ao_blur_depth_key(ivec2 full_pixel, float depth)
 #if defined(AO_BILATERAL_DEPTH_SEED_RAW)
     return depth;
 #else
-    return ao_view_z(ao_pixel_uv(full_pixel), depth);
+    return ao_pixel_view_z(full_pixel, depth);
 #endif
 }
 

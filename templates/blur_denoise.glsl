@@ -69,7 +69,7 @@ vec2 ao_denoise_tap(ivec2 q)
     ivec2 full = ao_full_pixel(q);
     float depth = ao_load_depth(full);
     if (ao_is_background(depth)) return vec2(-1.0, 0.0);
-    float z = ao_view_z(ao_pixel_uv(full), depth);
+    float z = ao_pixel_view_z(full, depth);
     if (!ao_is_finite(z)) return vec2(-1.0, 0.0);
     return vec2(ao_finalize(texelFetch(u_ao_input, q, 0).r), z);
 }

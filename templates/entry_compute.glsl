@@ -53,6 +53,7 @@ ivec2 ao_invocation_pixel(ivec2 invocation, ivec2 size)
 // the image are stored. Dispatch it over half the output's size, rounded up.
 void main()
 {
+    ao_begin_invocation(); // common/depth.glsl: what every tap reads, once (the tile's load reads it too)
 #if defined(AO_PASS_LOADS_TILE)
     ao_load_tile(); // as below: every invocation, before its edge test
 #endif
@@ -72,6 +73,7 @@ void main()
 #else
 void main()
 {
+    ao_begin_invocation(); // common/depth.glsl: what every tap reads, once (the tile's load reads it too)
 #if defined(AO_PASS_LOADS_TILE)
     // A pass that shares a tile of inputs across its workgroup (blur_denoise.glsl) loads it
     // here, in every invocation: the load ends in a barrier, which invocations past the

@@ -15,6 +15,7 @@ layout(location = 0) out float o_ao;
 
 void main()
 {
+    ao_begin_invocation(); // common/depth.glsl: what every tap reads, once
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float ao = ao_pass(pixel);
 #if defined(AO_DIAGNOSTICS)

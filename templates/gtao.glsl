@@ -86,6 +86,23 @@
 #error aogen: gtao.glsl needs AO_GTAO_SLICES and AO_GTAO_STEPS
 #endif
 
+// What decides how much a sample counts (FALLOFF AND THIN OCCLUDERS), fixed per pixel.
+struct ao_gtao_falloff {
+    float max_distance; // d_max: radius * (1 + thickness_bias * 10)
+    float stretch;      // t (2 + t), t = u.thin_occluder: |w + t (w . V) V|^2 = |w|^2 + stretch (w . V)^2
+    float inverse_fade; // 1 / (u.falloff_range d_max); 0 for a hard cut-off (falloff_range 0)
+};
+
+ao_gtao_falloff ao_gtao_falloff_of(float max_distance)
+{
+    ao_gtao_falloff f;
+    f.max_distance = max_distance;
+    f.stretch = u.thin_occluder * (2.0 + u.thin_occluder);
+    float fade_length = u.falloff_range * max_distance;
+    f.inverse_fade = fade_length > 0.0 ? 1.0 / fade_length : 0.0;
+    return f;
+}
+
 // The horizon cosine one sample offers: the cosine between V and the direction from P to
 // the scene point under screen position `pos` (full-resolution pixels), moved toward
 // `unoccluded` (the cosine of the hemisphere's edge on that side) by the falloff weight;
@@ -94,19 +111,23 @@
 // FALLOFF AND THIN OCCLUDERS
 //   The distance d that decides whether a sample counts is measured with the part of its
 //   offset w along the view ray stretched by 1 + u.thin_occluder:
-//       d = |w + u.thin_occluder (w . V) V|,
+//       d = |w + t (w . V) V|,  t = u.thin_occluder,
 //   so an occluder far in front of or behind P (the usual case of a thin pole or leg, whose
-//   depth the heightfield model extends to infinity) stops counting sooner. A sample with
+//   depth the heightfield model extends to infinity) stops counting sooner. V is a unit
+//   vector, so with a = w . V
+//       d^2 = |w|^2 + 2 t a^2 + t^2 a^2 = |w|^2 + t (2 + t) a^2
+//   -- the same dot products the cosine needs, and no second vector. A sample with
 //   d > d_max does not count; below, its weight is
 //       f = clamp((d_max - d) / (u.falloff_range d_max), 0, 1)
-//   and its horizon is mix(unoccluded, cos, f): 1 well inside the radius, fading to no
-//   occlusion at d_max. With falloff_range 0 the weight is 1 up to d_max (a hard cut-off).
-//   The cosine itself is always the true direction's: the falloff changes how much a
+//   (the division hoisted: ao_gtao_falloff's inverse_fade) and its horizon is
+//   mix(unoccluded, cos, f): 1 well inside the radius, fading to no occlusion at d_max. With
+//   falloff_range 0 the weight is 1 up to d_max (a hard cut-off). The cosine itself is always
+//   the true direction's, a / |w| (one inverse square root): the falloff changes how much a
 //   sample counts, never where it is.
-float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, float max_distance, float unoccluded)
+float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, ao_gtao_falloff f, float unoccluded)
 {
-    ivec2 size = ao_depth_size();
-    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return unoccluded;
+    // On screen (NaN fails); all() of the four tests, not &&, which branches.
+    if (!all(bvec4(greaterThanEqual(pos, vec2(0.0)), lessThan(pos, vec2(ao_depth_size()))))) return unoccluded;
     // The surface the sample lands on (common/slices.glsl's ao_slice_tap_surface), `pixels`
     // from the pixel: near it, on a plane, its point under pos on the slice line, at a
     // silhouette the nearest texel's own point; farther, the texel's own point.
@@ -115,14 +136,13 @@ float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, ve
     ivec2 q;
     if (!ao_slice_tap_surface(pos, pixels, depth, at, q)) return unoccluded;
     if (q == centre_pixel) return unoccluded;
-    vec3 w = ao_view_position(at / vec2(size), depth) - P;
+    vec3 w = ao_view_position_at(at, depth) - P;
     float along_view = dot(w, V);
-    float distance = length(w + (u.thin_occluder * along_view) * V);
-    float true_length = length(w);
-    if (!(true_length > 1e-30 && distance <= max_distance)) return unoccluded; // NaN and inf fail too
-    float fade_length = u.falloff_range * max_distance;
-    float weight = fade_length > 0.0 ? clamp((max_distance - distance) / fade_length, 0.0, 1.0) : 1.0;
-    return ao_lerp(unoccluded, along_view / true_length, weight);
+    float length_squared = dot(w, w);
+    float distance = sqrt(length_squared + f.stretch * (along_view * along_view));
+    if (!(length_squared > 1e-30 && distance <= f.max_distance)) return unoccluded; // NaN and inf fail too
+    float weight = f.inverse_fade > 0.0 ? clamp((f.max_distance - distance) * f.inverse_fade, 0.0, 1.0) : 1.0;
+    return ao_lerp(unoccluded, along_view * inversesqrt(length_squared), weight);
 }
 
 // The horizon angles (h-, h+) from the horizon cosines of the two sides (-1: no horizon),
@@ -159,7 +179,7 @@ ao_value ao_pass(ivec2 target_pixel)
     // leaves, which bounds the horizon search as u.radius does (common/slices.glsl).
     float radius_pixels, radius;
     ao_slice_radius(P, radius_pixels, radius);
-    float max_distance = radius * (1.0 + u.thickness_bias * 10.0);
+    ao_gtao_falloff falloff = ao_gtao_falloff_of(radius * (1.0 + u.thickness_bias * 10.0));
 
     vec2 rotation = ao_noise_rotation(target_pixel);
     vec2 centre = vec2(p) + 0.5;
@@ -184,8 +204,8 @@ ao_value ao_pass(ivec2 target_pixel)
         for (int j = 1; j <= AO_GTAO_STEPS; ++j) {
             float distance = ao_slice_step_pixels(j, AO_GTAO_STEPS, radius_pixels, u.frame_step);
             vec2 offset = dir * distance;
-            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, distance, p, P, V, max_distance, -sin_n));
-            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, distance, p, P, V, max_distance, sin_n));
+            cos_ahead = max(cos_ahead, ao_gtao_horizon_cos(centre + offset, distance, p, P, V, falloff, -sin_n));
+            cos_behind = max(cos_behind, ao_gtao_horizon_cos(centre - offset, distance, p, P, V, falloff, sin_n));
         }
         ao_half integral = ao_gtao_slice_integral(projected.y, ao_half(cos_behind), ao_half(cos_ahead));
         visibility_sum += float(projected.x * integral);

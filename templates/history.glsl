@@ -103,7 +103,7 @@ float ao_history_depth_code(float view_distance)
 bool ao_history_previous(ivec2 full, float depth, out vec2 previous_uv, out float expected)
 {
     vec2 uv = ao_pixel_uv(full);
-    vec4 x = u.view_to_previous_view * vec4(ao_view_position(uv, depth), 1.0);
+    vec4 x = u.view_to_previous_view * vec4(ao_view_position_uv(uv, depth), 1.0);
     expected = ao_history_depth_code(-x.z);
 #if defined(AO_HISTORY_MOTION_VECTORS)
     previous_uv = uv + u.motion_scale * texelFetch(u_motion, full, 0).rg;
@@ -238,7 +238,7 @@ ao_value ao_pass(ivec2 p)
             frames = min(1.0 + history.y * history.z, AO_HISTORY_MAX_FRAMES);
         }
     }
-    float own = ao_history_depth_code(-ao_view_z(ao_pixel_uv(full), depth));
+    float own = ao_history_depth_code(-ao_view_position_uv(ao_pixel_uv(full), depth).z);
     ao_store_history(p, ao_is_finite(own) ? vec4(result, own, frames, 0.0) : vec4(result, 0.0, 0.0, 0.0));
     return ao_make_value(result, ao_value_bent(current));
 }

@@ -88,6 +88,7 @@ int ao_child_index(int level, ivec2 c, ivec2 first, int side)
 
 void main()
 {
+    ao_begin_invocation(); // common/depth.glsl: the depth buffer's size, once
     ivec2 local = ivec2(gl_LocalInvocationID.xy);
     ivec2 group = ivec2(gl_WorkGroupID.xy);
 

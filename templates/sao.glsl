@@ -118,8 +118,8 @@ float ao_pass(ivec2 target_pixel)
             continue;                                            // background: judged open
         }
         float term = 0.0;
-        if (plane_weight < 1.0) term = ao_sao_term(P, n, ao_view_position(texel_at / fsize, texel_depth), radius);
-        if (plane_weight > 0.0) term = ao_lerp(term, ao_sao_term(P, n, ao_view_position(pos / fsize, plane_depth), radius), plane_weight);
+        if (plane_weight < 1.0) term = ao_sao_term(P, n, ao_view_position_at(texel_at, texel_depth), radius);
+        if (plane_weight > 0.0) term = ao_lerp(term, ao_sao_term(P, n, ao_view_position_at(pos, plane_depth), radius), plane_weight);
         sum += on_screen * counts * surface * term;
     }
     float visibility = clamp(1.0 - 2.0 * u.intensity * sum / max(judged, 1.0), 0.0, 1.0);

@@ -204,7 +204,7 @@ float ao_ssao_output(float occluded, float strength, float power, float intensit
 // The hemisphere estimate of full-resolution pixel p (its depth `depth`, not background).
 float ao_ssao_hemisphere(ivec2 target_pixel, ivec2 p, float depth)
 {
-    vec3 P = ao_view_position(ao_pixel_uv(p), depth);
+    vec3 P = ao_view_position_at(vec2(p) + 0.5, depth);
     if (!ao_is_finite(P)) return 1.0;
     vec3 V = ao_view_direction(P);
     vec3 n;
@@ -242,8 +242,8 @@ float ao_ssao_hemisphere(ivec2 target_pixel, ivec2 p, float depth)
         int level = ao_tap_level(length(pos - (vec2(p) + 0.5))); // its depth MIP level (0 without a chain)
         if (!ao_depth_readings(pos, level, texel_depth, texel_at, plane_depth, plane_weight, surface)) continue; // background: judged open
         float occ = 0.0;
-        if (plane_weight < 1.0) occ = ao_ssao_occlusion(P.z, S.z, ao_view_z(texel_at / fsize, texel_depth), radius, bias);
-        if (plane_weight > 0.0) occ = ao_lerp(occ, ao_ssao_occlusion(P.z, S.z, ao_view_z(pos / fsize, plane_depth), radius, bias), plane_weight);
+        if (plane_weight < 1.0) occ = ao_ssao_occlusion(P.z, S.z, ao_view_z_at(texel_at, texel_depth), radius, bias);
+        if (plane_weight > 0.0) occ = ao_lerp(occ, ao_ssao_occlusion(P.z, S.z, ao_view_z_at(pos, plane_depth), radius, bias), plane_weight);
         occlusion += on_screen * counts * surface * occ;
 #else
         // Off screen (a NaN fails every comparison and is skipped too).
@@ -258,7 +258,7 @@ float ao_ssao_hemisphere(ivec2 target_pixel, ivec2 p, float depth)
         int level = ao_tap_level(length(pos - (vec2(p) + 0.5))); // its depth MIP level (0 without a chain)
         if (!ao_depth_at(pos, level, scene_depth, at, q)) continue; // background: judged open
         if (q == p) continue; // its own texel: a self-comparison that can only measure depth quantization
-        occlusion += ao_ssao_occlusion(P.z, S.z, ao_view_z(at / fsize, scene_depth), radius, bias);
+        occlusion += ao_ssao_occlusion(P.z, S.z, ao_view_z_at(at, scene_depth), radius, bias);
 #endif
     }
     return ao_ssao_output(ao_ssao_occluded(occlusion, judged), u.strength, u.power, u.intensity);

@@ -43,7 +43,7 @@ vec3 ao_upsample_candidate(ivec2 q)
     float ao = ao_finalize(texelFetch(u_ao_input, qc, 0).r);
     ivec2 q_full = ao_full_pixel(qc);
     float q_depth = ao_load_depth(q_full);
-    float z = ao_is_background(q_depth) ? 0.0 : ao_view_z(ao_pixel_uv(q_full), q_depth);
+    float z = ao_is_background(q_depth) ? 0.0 : ao_pixel_view_z(q_full, q_depth);
     bool counts = inside && !ao_is_background(q_depth) && ao_is_finite(z);
     return vec3(ao, z, counts ? 1.0 : 0.0);
 }
@@ -147,7 +147,7 @@ ao_candidates ao_upsample_candidates(ivec2 q0)
 // where they all underflow, q0's value where no candidate counts.
 ao_value ao_upsample_blend(ivec2 P, float depth, ivec2 q0, ao_candidates c)
 {
-    float z = ao_view_z(ao_pixel_uv(P), depth);
+    float z = ao_pixel_view_z(P, depth);
     if (!ao_is_finite(z)) return c.value[0];
     vec2 f = vec2(P - 2 * q0) * 0.5;
     vec4 bilinear = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
@@ -178,7 +178,7 @@ ao_value4 ao_pass_quad(ivec2 q0)
 {
     vec4 g = ao_depth_quad(2 * q0); // textureGather's order: (0, 1), (1, 1), (1, 0), (0, 0)
     vec4 depth = vec4(g.w, g.z, g.x, g.y);
-    if (ao_is_background(depth.x) && ao_is_background(depth.y) && ao_is_background(depth.z) && ao_is_background(depth.w))
+    if (all(ao_is_background(depth)))
         return ao_quad_of(vec4(1.0));
     ivec2 last = ao_depth_size() - 1;
     ao_candidates c = ao_upsample_candidates(q0);

@@ -198,7 +198,7 @@ uint ao_vbao_sample(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, 
     vec2 at;
     ivec2 q;
     if (!ao_slice_tap_surface(pos, pixels, depth, at, q) || q == centre_pixel) return 0u; // common/slices.glsl, as gtao.glsl
-    vec3 front = ao_view_position(at / vec2(size), depth);
+    vec3 front = ao_view_position_at(at, depth);
     vec3 w = front - P;
     float distance = length(w);
     if (!(distance <= radius)) return 0u; // beyond the AO radius; NaN and inf fail too

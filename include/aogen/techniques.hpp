@@ -53,7 +53,8 @@ constexpr bool technique_table_complete()
     for (std::size_t i = 0; i < technique_table.size(); ++i) {
         const technique_desc& t = technique_table[i];
         if (t.id != technique_names[i].value) return false;
-        if (!t.block || !t.pack || !t.noise_size || !t.files || !t.defines || !t.constants || !t.period_turns || !t.counts_text)
+        if (!t.block || !t.pack || !t.noise_size || !t.files || !t.defines || !t.constants || !t.period_turns || !t.counts_text ||
+            t.taps_per_iteration < 1)
             return false;
     }
     return true;

@@ -69,7 +69,7 @@ bool ao_floor_centre(ivec2 target_pixel, out ivec2 p, out float sum, out vec2 ro
     radius_pixels = 0.0;
     if (ao_is_background(depth)) return false;
     sum += ao_floor_normal_fetches(p);
-    radius_pixels = ao_floor_radius_pixels(ao_view_z(ao_pixel_uv(p), depth));
+    radius_pixels = ao_floor_radius_pixels(ao_pixel_view_z(p, depth));
     rotation = ao_noise_rotation(target_pixel);
     return true;
 }

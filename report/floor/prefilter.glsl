@@ -18,6 +18,7 @@ void ao_floor_store(int level, ivec2 t, float value)
 
 void main()
 {
+    ao_begin_invocation(); // common/depth.glsl, as prefilter.glsl
     ivec2 local = ivec2(gl_LocalInvocationID.xy);
     ivec2 group = ivec2(gl_WorkGroupID.xy);
     ivec2 t1 = group * 8 + local;

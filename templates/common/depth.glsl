@@ -1,6 +1,6 @@
 // common/depth.glsl -- the depth buffer: sizes, the full/half resolution mapping, the
 // background test of each depth convention and view-space reconstruction through
-// u.inv_proj (every pass block has it).
+// u.inv_proj (every pass block has it), in screen pixels (THE UNPROJECTION IN PIXELS).
 //
 // Binding AO_BINDING_DEPTH: the depth buffer at full resolution as a float texture (a
 // sampled D32/D24 depth image or an R32F copy), read with texelFetch from .r. Its size is
@@ -10,10 +10,37 @@
 
 // u_depth: declared by aogen::codegen (aogen/bindings.hpp).
 
+// ---- read once per invocation ---------------------------------------------------------------
+// What every tap needs and no tap changes: the depth buffer's size and the inverse projection
+// in screen pixels (THE UNPROJECTION IN PIXELS, below). ao_begin_invocation() sets them, first
+// thing in every entry point's main; before, each tap of a GTAO step queried the size four
+// times and divided its position by it (aogen/loops.hpp counts what a tap costs).
+ivec2 ao_invocation_depth_size = ivec2(1);
+vec4 ao_unproject_per_x = vec4(0.0), ao_unproject_per_y = vec4(0.0), ao_unproject_origin = vec4(0.0);
+
+// THE UNPROJECTION IN PIXELS
+//   A screen position (x, y) in full-resolution pixels (centres at +0.5, y down) is at
+//   ndc = (2 x / W - 1, 1 - 2 y / H), so with c0 .. c3 the columns of u.inv_proj
+//       inv_proj * (ndc, d, 1) = c0 ndc.x + c1 ndc.y + c2 d + c3
+//                              = (2 / W) c0 x + (-2 / H) c1 y + c2 d + (c3 - c0 + c1):
+//   three columns fixed per invocation (ao_unproject_per_x, _per_y, _origin) and c2 itself, so a
+//   tap's homogeneous point is three vector multiply-adds -- no division of its position by the
+//   screen's size, no mapping to ndc -- and any projection matrix keeps working (an engine's
+//   jittered, off-centre or oblique one), which a form with the matrix's structure assumed
+//   (XeGTAO's NDCToViewMul / Add on a linear depth) would not.
+void ao_begin_invocation()
+{
+    ao_invocation_depth_size = max(textureSize(u_depth, 0), ivec2(1));
+    vec2 to_ndc = 2.0 / vec2(ao_invocation_depth_size);
+    ao_unproject_per_x = u.inv_proj[0] * to_ndc.x;
+    ao_unproject_per_y = u.inv_proj[1] * -to_ndc.y;
+    ao_unproject_origin = u.inv_proj[3] - u.inv_proj[0] + u.inv_proj[1];
+}
+
 // The depth buffer's size in pixels (at least 1 x 1).
 ivec2 ao_depth_size()
 {
-    return max(textureSize(u_depth, 0), ivec2(1));
+    return ao_invocation_depth_size;
 }
 
 // The AO target's size in pixels: the AO image and the blur passes' input and output.
@@ -62,28 +89,56 @@ vec2 ao_pixel_uv(ivec2 full_pixel)
 // values past the clear value and non-finite values (a NaN texel) count as background too.
 bool ao_is_background(float depth)
 {
-    if (!ao_is_finite(depth)) return true;
+    // any() of both tests, not ||: GLSL's || branches (a tap makes five of these tests).
 #if defined(AO_DEPTH_STANDARD)
-    return depth >= 1.0;
+    return any(bvec2(!ao_is_finite(depth), depth >= 1.0));
 #else
-    return depth <= 0.0;
+    return any(bvec2(!ao_is_finite(depth), depth <= 0.0));
 #endif
 }
 
-// The homogeneous view-space point of (uv, depth): inv_proj * ndc. ndc.y = 1 - 2 uv.y.
-vec4 ao_unproject(vec2 uv, float depth)
+// ao_is_background of four depths at once (a gather's), without a branch.
+bvec4 ao_is_background(vec4 depth)
 {
-    return u.inv_proj * vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
+    uvec4 not_finite = uvec4(equal(floatBitsToUint(depth) & uvec4(0x7f800000u), uvec4(0x7f800000u)));
+#if defined(AO_DEPTH_STANDARD)
+    uvec4 cleared = uvec4(greaterThanEqual(depth, vec4(1.0)));
+#else
+    uvec4 cleared = uvec4(lessThanEqual(depth, vec4(0.0)));
+#endif
+    return notEqual(not_finite | cleared, uvec4(0u));
 }
 
-// The view-space position of a depth-buffer value at `uv` (depth must not be background).
-// Perspective: w = 1 / view distance > 0 for every depth in front of the camera; it is
-// kept away from 0 so the division cannot fault (an absurd depth then gives a huge or
-// non-finite position, which callers test with ao_is_finite). Orthographic: inv_proj is
-// affine, w is exactly 1 and there is no division.
-vec3 ao_view_position(vec2 uv, float depth)
+// The homogeneous view-space point of screen position `pos` (full-resolution pixels) at raw
+// depth `depth`: inv_proj * (ndc, depth, 1) in pixels (THE UNPROJECTION IN PIXELS).
+vec4 ao_unproject_pixels(vec2 pos, float depth)
 {
-    vec4 p = ao_unproject(uv, depth);
+    return ao_unproject_per_x * pos.x + (ao_unproject_per_y * pos.y + (u.inv_proj[2] * depth + ao_unproject_origin));
+}
+
+// The view-space position of a depth-buffer value at screen position `pos` (full-resolution
+// pixels; depth must not be background) -- every tap's and every pixel's own point, so that
+// both round alike. Perspective: w = 1 / view distance > 0 for every depth in front of the
+// camera; it is kept away from 0 so the reciprocal cannot fault (an absurd depth then gives a
+// huge or non-finite position, which callers test with ao_is_finite). Orthographic: inv_proj
+// is affine, w is exactly 1 and there is no division.
+vec3 ao_view_position_at(vec2 pos, float depth)
+{
+    vec4 p = ao_unproject_pixels(pos, depth);
+#if defined(AO_PROJECTION_ORTHOGRAPHIC)
+    return p.xyz;
+#else
+    return p.xyz * (1.0 / max(p.w, 1e-30)); // one reciprocal, three multiplies
+#endif
+}
+
+// The view-space position of a depth-buffer value at `uv` through u.inv_proj itself, for the
+// history pass (history.glsl), whose reprojection projects it back through the matrices: a
+// still camera's round trip then lands on the pixel's centre to the bit, where the pixel form
+// above lands an ulp or two beside it, and the history's bilinear read mixes in a neighbour.
+vec3 ao_view_position_uv(vec2 uv, float depth)
+{
+    vec4 p = u.inv_proj * vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
 #if defined(AO_PROJECTION_ORTHOGRAPHIC)
     return p.xyz;
 #else
@@ -91,15 +146,21 @@ vec3 ao_view_position(vec2 uv, float depth)
 #endif
 }
 
-// Only the view-space z of ao_view_position (negative in front of the camera).
-float ao_view_z(vec2 uv, float depth)
+// Only the view-space z of ao_view_position_at (negative in front of the camera).
+float ao_view_z_at(vec2 pos, float depth)
 {
-    vec4 p = ao_unproject(uv, depth);
+    vec4 p = ao_unproject_pixels(pos, depth);
 #if defined(AO_PROJECTION_ORTHOGRAPHIC)
     return p.z;
 #else
     return p.z / max(p.w, 1e-30);
 #endif
+}
+
+// The view-space z of full-resolution pixel `full_pixel`'s centre at depth `depth`.
+float ao_pixel_view_z(ivec2 full_pixel, float depth)
+{
+    return ao_view_z_at(vec2(full_pixel) + 0.5, depth);
 }
 
 // The four depths of the 2x2 texels whose centres surround `pos`, from texel `i0` (the
@@ -292,7 +353,7 @@ bool ao_depth_at(vec2 pos, int level, out float depth, out vec2 at, out ivec2 ne
     vec4 g = ao_depth_around(pos, level, f, depth, at, nearest);
     float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
     if (ao_is_background(depth)) return false;
-    if (ao_is_background(d00) || ao_is_background(d10) || ao_is_background(d01) || ao_is_background(d11)) return true;
+    if (any(ao_is_background(g))) return true;
     if (ao_depth_off_plane(d00, d10, d01, d11)) return true; // not one plane
     depth = ao_depth_bilinear(g, f);
     at = pos;
@@ -337,7 +398,7 @@ bool ao_depth_readings(vec2 pos, int level, out float texel_depth, out vec2 texe
     plane_weight = 0.0;
     surface = 0.0;
     if (ao_is_background(texel_depth)) return false;
-    bvec4 gap = bvec4(ao_is_background(g.x), ao_is_background(g.y), ao_is_background(g.z), ao_is_background(g.w));
+    bvec4 gap = ao_is_background(g);
     if (!any(gap)) {
         surface = 1.0;
         plane_weight = ao_depth_plane_weight(g);
@@ -357,7 +418,7 @@ bool ao_depth_readings(vec2 pos, int level, out float texel_depth, out vec2 texe
     else if (!gap.z && !gap.y) step = ivec2(1, 0);  // column i1
     else return true;                                 // one texel of surface: its centre only
     vec4 h = ao_depth_quad_at(ivec2(floor(ao_depth_quad_coords(pos, level))) + step, level);
-    if (ao_is_background(h.x) || ao_is_background(h.y) || ao_is_background(h.z) || ao_is_background(h.w)) return true;
+    if (any(ao_is_background(h))) return true;
     plane_weight = ao_depth_plane_weight(h);
     if (plane_weight > 0.0) plane_depth = ao_depth_bilinear(h, f - vec2(step)); // past h's centres, along `step`
     return true;

@@ -43,7 +43,7 @@ bool ao_neighbour_position(ivec2 q, out vec3 position)
     if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) return false;
     float depth = ao_load_depth(q);
     if (ao_is_background(depth)) return false;
-    position = ao_view_position(ao_pixel_uv(q), depth);
+    position = ao_view_position_at(vec2(q) + 0.5, depth);
     return ao_is_finite(position);
 }
 
@@ -106,7 +106,7 @@ bool ao_pass_surface(ivec2 target_pixel, out ivec2 p, out vec3 P, out vec3 V, ou
     P = vec3(0.0), V = vec3(0.0, 0.0, 1.0), n = vec3(0.0, 0.0, 1.0);
     float depth = ao_load_depth(p);
     if (ao_is_background(depth)) return false;
-    P = ao_view_position(ao_pixel_uv(p), depth);
+    P = ao_view_position_at(vec2(p) + 0.5, depth);
     if (!ao_is_finite(P)) return false;
     V = ao_view_direction(P);
     return ao_surface_normal(p, P, V, n);

@@ -81,6 +81,9 @@ struct technique_desc {
     double (*period_turns)(const variant& v);
     // What it computes per pixel, as selection.hpp lists it: "ssao: 16 samples".
     std::string (*counts_text)(const variant& v);
+    // The taps one iteration of its AO pass's sample loop reads (the tap loop of
+    // compile/loops.hpp): a slice step's two, one on each side; a sample's one.
+    int taps_per_iteration;
 };
 
 } // namespace aogen

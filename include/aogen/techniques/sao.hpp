@@ -80,6 +80,7 @@ inline constexpr technique_desc sao{
     },
     [](const variant&) { return 1.0; }, // the spiral turns whole
     [](const variant& v) { return "sao: " + std::to_string(v.samples) + " spiral taps"; },
+    1, // taps per iteration: a sample reads one tap
 };
 
 } // namespace techniques

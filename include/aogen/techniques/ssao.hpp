@@ -114,6 +114,7 @@ inline constexpr technique_desc ssao{
     },
     [](const variant&) { return 1.0; }, // the kernel turns whole
     [](const variant& v) { return "ssao: " + std::to_string(v.samples) + " samples"; },
+    1, // taps per iteration: a sample reads one tap
 };
 
 } // namespace techniques

@@ -66,6 +66,7 @@ inline constexpr technique_desc vbao{
     slice_technique::constants,
     slice_technique::period_turns,
     slice_technique::counts_text,
+    2, // taps per iteration: a step reads a tap on each side
 };
 
 } // namespace techniques

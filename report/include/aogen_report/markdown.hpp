@@ -34,14 +34,14 @@ inline void write_variants(std::ostream& md, const report_data& d)
 {
     md << "## Variants, fastest first\n\n";
     md << "| variant | ms | p10–p90 | floor ms | × floor | BW floor ms | × BW | RMSE default | ★ | RMSE calibrated | ★ | RMSE after " << d.frames
-       << " frames | ★ | bent normal ° | AO instructions | raw NaN/Inf | raw out of [0, 1] |\n";
-    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|:-:|---:|---:|---:|---:|\n";
+       << " frames | ★ | bent normal ° | AO instructions | per tap | raw NaN/Inf | raw out of [0, 1] |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|---:|:-:|---:|:-:|---:|:-:|---:|---:|---:|---:|---:|\n";
     for (size_t i : detail::by_time(d.variants)) {
         const variant_record& v = d.variants[i];
         md << "| `" << v.name << "` | " << fixed(v.ms, 3) << " | " << detail::range(v.ms_p10, v.ms_p90) << " | " << fixed(v.floor_ms, 3) << " | "
            << fixed(v.floor_ratio, 2) << " | " << fixed(v.bandwidth_ms, 3) << " | " << fixed(v.bandwidth_ratio, 2) << " | " << fixed(v.rmse, 4) << " | " << (v.pareto ? "★" : "") << " | " << fixed(v.rmse_calibrated, 4)
            << " | " << (v.pareto_calibrated ? "★" : "") << " | " << fixed(v.rmse_accumulated, 4) << " | " << (v.pareto_accumulated ? "★" : "") << " | "
-           << fixed(v.bent_degrees, 1, "") << " | " << v.ao_instructions << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
+           << fixed(v.bent_degrees, 1, "") << " | " << v.ao_instructions << " | " << fixed(v.ao_tap_instructions, 1) << " | " << detail::raw_non_finite(v.raw, v.raw_measured)
            << " | " << detail::raw_range(v.raw, v.raw_measured) << " |\n";
     }
 }

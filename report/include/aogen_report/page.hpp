@@ -312,7 +312,8 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
     for (const char* title : {"ms", "p10", "p90", "× floor", "× BW", "RMSE default", "★", "RMSE calibrated", "★ cal."})
         html << sort_header(title, "number", true);
     html << sort_header("RMSE after " + std::to_string(d.frames) + " frames", "number", true) << sort_header("★ frames", "number", true)
-         << sort_header("bent normal °", "number", true) << sort_header("AO instructions", "number", true);
+         << sort_header("bent normal °", "number", true) << sort_header("AO instructions", "number", true)
+         << sort_header("per tap", "number", true);
     html << sort_header("raw NaN/Inf", "text", true) << "</tr></thead>\n<tbody>\n";
     for (size_t i : by_time(d.variants)) {
         const variant_record& v = d.variants[i];
@@ -326,7 +327,8 @@ inline void write_variant_table(std::ostream& html, const report_data& d)
              << value_cell(v.rmse_calibrated, fixed(v.rmse_calibrated, 4)) << value_cell(v.pareto_calibrated, v.pareto_calibrated ? "★" : "", 0)
              << value_cell(v.rmse_accumulated, fixed(v.rmse_accumulated, 4)) << value_cell(v.pareto_accumulated, v.pareto_accumulated ? "★" : "", 0)
              << value_cell(v.bent_degrees, fixed(v.bent_degrees, 1, ""))
-             << value_cell(v.ao_instructions, std::to_string(v.ao_instructions), 0) << text_cell(raw_non_finite(v.raw, v.raw_measured), "num")
+             << value_cell(v.ao_instructions, std::to_string(v.ao_instructions), 0)
+             << value_cell(v.ao_tap_instructions, fixed(v.ao_tap_instructions, 1), 0) << text_cell(raw_non_finite(v.raw, v.raw_measured), "num")
              << "</tr>\n";
     }
     html << "</tbody>\n</table></div>\n";

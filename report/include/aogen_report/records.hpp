@@ -98,6 +98,7 @@ struct variant_record {
     std::vector<std::string> passes;
     std::vector<uint32_t> instructions; // SPIR-V instructions per shader (after spirv-opt)
     uint32_t ao_instructions = 0;       // of the AO pass's shader (fragment: its fragment shader)
+    double ao_tap_instructions = 0;     // its tap loop's instructions per tap (aogen/loops.hpp); 0: no loop left
     std::vector<run_record> runs;       // one per scene so far, in settings order
     // Summaries over the scenes it ran on.
     double rmse = std::numeric_limits<double>::quiet_NaN(), rmse_calibrated = rmse;

@@ -13,6 +13,7 @@
 //                   timed_gpu_ms, timed_wall_ms,     // the timing rounds: timestamp span against host wall clock
 //                   iterations, settled}],           // per round, as the budget allowed; warm-up settled
 //     "variants": [{name, hash, technique, stage, passes, spirv_instructions, ao_instructions,
+//                   ao_tap_instructions,               // the AO pass's tap loop per tap (aogen/loops.hpp), 0: none
 //                   ms, ms_p10, ms_p90, floor_ms, floor_ratio, bandwidth_ms, bandwidth_ratio, rmse, rmse_calibrated,
 //                   rmse_accumulated,                  // of the mean of "frames" frames (temporal.hpp)
 //                   bent_degrees,                      // -bn: mean over scenes of the bent normals' mean angle to the truth's; else null
@@ -104,6 +105,7 @@ inline nlohmann::json variant_json(const variant_record& v, const std::vector<sc
             {"passes", v.passes},
             {"spirv_instructions", v.instructions},
             {"ao_instructions", v.ao_instructions},
+            {"ao_tap_instructions", v.ao_tap_instructions},
             {"ms", number(v.ms)},
             {"ms_p10", number(v.ms_p10)},
             {"ms_p90", number(v.ms_p90)},

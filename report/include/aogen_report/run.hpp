@@ -53,6 +53,7 @@
 #include "settings.hpp"
 #include "summary.hpp"
 
+#include <aogen/loops.hpp>
 #include <aogen/parallel.hpp>
 #include <aogen/selection.hpp>
 #include <aogen/vulkan/chain.hpp>
@@ -154,13 +155,24 @@ inline void append_sources(const generated_variant& g, std::vector<aogen::codege
     for (const floor_shaders& f : g.floors) out.insert(out.end(), f.sources.begin(), f.sources.end());
 }
 
-// The compiled size of each of the variant's shaders, in chain order.
+// The static instructions per tap of `v`'s AO pass (`spirv`): its tap loop's instructions
+// (aogen/loops.hpp's THE COUNT) over the taps one iteration reads; 0 where no loop is left.
+inline double tap_instructions(const aogen::variant& v, const std::vector<uint32_t>& spirv, const std::string& name)
+{
+    const std::optional<aogen::compile::loop> tap = aogen::compile::tap_loop_of(spirv, name);
+    return tap ? double(tap->instructions) / aogen::technique_of(v.tech).taps_per_iteration : 0.0;
+}
+
+// The compiled size of each of the variant's shaders, in chain order, and its AO pass's per tap.
 inline void count_instructions(variant_record& r, const generated_variant& g, aogen::vulkan::spirv_cache& cache)
 {
     for (const aogen::codegen::shader_source& s : g.shipped_sources) {
         const uint32_t n = aogen::compile::count_instructions(cache.get(s), s.name);
         r.instructions.push_back(n);
-        if (s.pass == aogen::pass_kind::ao && s.stage != aogen::shader_stage::vertex) r.ao_instructions = n;
+        if (s.pass == aogen::pass_kind::ao && s.stage != aogen::shader_stage::vertex) {
+            r.ao_instructions = n;
+            r.ao_tap_instructions = tap_instructions(g.shipped.variant(), cache.get(s), s.name);
+        }
         if (s.stage != aogen::shader_stage::vertex) r.passes.push_back(aogen::names::name_of(aogen::pass_kind_names, s.pass, "pass"));
     }
 }
