@@ -140,7 +140,9 @@ float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, ve
     float along_view = dot(w, V);
     float length_squared = dot(w, w);
     float distance = sqrt(length_squared + f.stretch * (along_view * along_view));
-    if (!(length_squared > 1e-30 && distance <= f.max_distance)) return unoccluded; // NaN and inf fail too
+    // |w| > 3e-19, a sample at P itself no sample (1e-37: a normal float, so no epsilon of scale);
+    // NaN and inf fail too.
+    if (!(length_squared > 1e-37 && distance <= f.max_distance)) return unoccluded;
     float weight = f.inverse_fade > 0.0 ? clamp((f.max_distance - distance) * f.inverse_fade, 0.0, 1.0) : 1.0;
     return ao_lerp(unoccluded, along_view * inversesqrt(length_squared), weight);
 }
