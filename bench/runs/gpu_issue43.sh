@@ -9,7 +9,7 @@
 # each beside its fetch and bandwidth floors (the report's GPU protocol: warm-up, interleaved
 # rounds, medians and p10-p90; per pass times in results.json's pass_ms). The order is
 # after, before, after: a drift of the clocks between the two builds shows as the two
-# "after" runs disagreeing. 256-ray references (both builds score against the same truth).
+# "after" runs disagreeing. 1024-ray references, the fewest --rays takes (both builds score against the same truth).
 # Usage (from the device tool, carry [".gl", ".carry"]): bash bench/runs/gpu_issue43.sh
 # Before: mv .carry/pack.tar.xz .carry/before.tar.xz (the old build's pack), rebuild, then
 # bash bench/device/pack.sh (this build's).
@@ -21,7 +21,7 @@ V=gtao-3x3-full-denoise-gbufview-std-persp-cs,gtao-2x2-half-denoise-gbufworld-st
 run() { # $1 label, $2 binary directory
   clocks
   echo "== $1" >> $L
-  timeout 170 $2/aogen_report --size 1920x1080 --rays 256 --scenes $S --variants $V --motion-variants none --no-feature-saving \
+  timeout 170 $2/aogen_report --size 1920x1080 --rays 1024 --scenes $S --variants $V --motion-variants none --no-feature-saving \
     --out /tmp/$1 >> $L 2>&1
   echo "rc $?" >> $L
   clocks

@@ -3,7 +3,7 @@
 # this one, one after the other on the idle 2-core machine, at 320x180 on room, engine and
 # terrain, with the variants of the issue's table -- lavapipe's times (the CPU running the
 # shaders through LLVM), a second source beside the static counts, never a GPU figure.
-# Order after, before, after: the two "after" runs disagreeing would show the machine drifting.
+# Order after, before, after: the two "after" runs disagreeing would show the machine drifting. 1024-ray references (the fewest --rays takes).
 # Usage: bash bench/runs/lavapipe_issue43.sh BEFORE_BIN_DIR OUT_DIR
 #   BEFORE_BIN_DIR: a directory holding the earlier build's aogen_report (for instance
 #   `tar -xJf .carry/before.tar.xz -C /tmp/before ./bin/aogen_report` gives /tmp/before/bin)
@@ -14,7 +14,7 @@ out=$2
 S=room,engine,terrain
 V=gtao-3x3-full-denoise-gbufview-std-persp-cs,gtao-2x2-half-denoise-gbufworld-std-persp-cs,ssao-s16-half-bilateral-gbufworld-std-persp-cs
 run() { # $1 label, $2 binary directory
-  "$2/aogen_report" --size 320x180 --rays 256 --scenes $S --variants $V --motion-variants none --no-feature-saving \
+  "$2/aogen_report" --size 320x180 --rays 1024 --scenes $S --variants $V --motion-variants none --no-feature-saving \
     --no-fetch-floor --rounds 5 --iterations 3 --warmup-ms 200 --out "$out/$1" > "$out/$1.log" 2>&1
 }
 mkdir -p "$out"
