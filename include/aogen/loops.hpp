@@ -21,7 +21,8 @@
 //
 // ERRORS
 //   aogen::error naming `name`: a module that is not SPIR-V at the word level
-//   (count_instructions' message).
+//   (count_instructions' message), or a label, branch or merge instruction too short for its
+//   operands.
 //
 // THE COUNT
 //   SPIR-V's structured control flow makes a loop's blocks a closed set: a loop header (the
@@ -48,6 +49,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -78,6 +80,17 @@ inline bool reads_image(uint32_t opcode)
             opcode != spv::OpImageSparseTexelsResident);
 }
 
+// The words an instruction of `opcode` needs for the operands blocks_of reads; 1 for the rest.
+inline uint32_t words_read(uint32_t opcode)
+{
+    switch (opcode) {
+    case spv::OpLabel: case spv::OpBranch: return 2;
+    case spv::OpSwitch: return 3;
+    case spv::OpLoopMerge: case spv::OpBranchConditional: return 4;
+    default: return 1;
+    }
+}
+
 // Every block of every function, by its label's id.
 inline std::map<uint32_t, spirv_block> blocks_of(const std::vector<uint32_t>& words, std::string_view name)
 {
@@ -87,6 +100,9 @@ inline std::map<uint32_t, spirv_block> blocks_of(const std::vector<uint32_t>& wo
     for (size_t i = 5; i < words.size(); i += words[i] >> 16) {
         const uint32_t opcode = words[i] & 0xffffu, length = words[i] >> 16;
         const uint32_t* w = &words[i];
+        if (length < words_read(opcode))
+            fail(name, "instruction at word " + std::to_string(i) + " (opcode " + std::to_string(opcode) + ") has " + std::to_string(length) + " words",
+                 "valid: at least " + std::to_string(words_read(opcode)));
         if (opcode == spv::OpLabel) current = &blocks[w[1]];
         if (opcode == spv::OpFunction || opcode == spv::OpFunctionEnd) current = nullptr;
         if (!current) continue; // module-level instructions, a function's declaration and parameters
@@ -136,8 +152,8 @@ inline std::vector<loop> loops_of(const std::vector<uint32_t>& words, std::strin
         l.header = id;
         members.push_back(detail::loop_blocks(blocks, id, b.merge));
         for (uint32_t m : members.back()) {
-            const detail::spirv_block& mb = blocks.at(m);
-            l.instructions += mb.instructions, l.image_reads += mb.image_reads;
+            const auto it = blocks.find(m); // a branch to a label no block has: nothing to count
+            if (it != blocks.end()) l.instructions += it->second.instructions, l.image_reads += it->second.image_reads;
         }
         loops.push_back(l);
     }

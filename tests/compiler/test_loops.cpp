@@ -143,6 +143,17 @@ TEST_CASE("loops: a module without a loop that reads has no tap loop, and one th
     } catch (const aogen::error& e) {
         CHECK(std::string(e.what()).find("gtao-… ao") != std::string::npos);
     }
+    // The module's last instruction (OpFunctionEnd) made a one-word OpBranch: its target
+    // would be read past the module's end.
+    std::vector<uint32_t> short_branch = words;
+    short_branch.back() = (1u << 16) | spv::OpBranch;
+    try {
+        cc::loops_of(short_branch, "vbao-… ao");
+        FAIL("a one-word OpBranch was read");
+    } catch (const aogen::error& e) {
+        CHECK(std::string(e.what()).find("vbao-… ao: instruction at word") != std::string::npos);
+        CHECK(std::string(e.what()).find("valid: at least 2") != std::string::npos);
+    }
 }
 
 TEST_CASE("loops: every technique's tap loop is the loop of its samples (slice techniques: the steps, inside the slices)", "[loops]")
