@@ -126,14 +126,14 @@ inline std::map<uint32_t, spirv_block> blocks_of(const std::vector<uint32_t>& wo
 inline std::set<uint32_t> loop_blocks(const std::map<uint32_t, spirv_block>& blocks, uint32_t header, uint32_t merge)
 {
     std::set<uint32_t> seen{header};
-    std::vector<uint32_t> todo{header};
-    while (!todo.empty()) {
-        const uint32_t id = todo.back();
-        todo.pop_back();
+    std::vector<uint32_t> pending{header};
+    while (!pending.empty()) {
+        const uint32_t id = pending.back();
+        pending.pop_back();
         const auto it = blocks.find(id);
         if (it == blocks.end()) continue;
         for (uint32_t next : it->second.successors)
-            if (next != merge && seen.insert(next).second) todo.push_back(next);
+            if (next != merge && seen.insert(next).second) pending.push_back(next);
     }
     return seen;
 }
