@@ -4,7 +4,7 @@
 // ceil(width / AO_WORKGROUP_X) x ceil(height / AO_WORKGROUP_Y) groups for the output
 // image's size; invocations past its edge write nothing. A pass that defines
 // AO_PASS_LOADS_TILE has every invocation call its ao_load_tile() first (blur_denoise.glsl,
-// upsample.glsl: tiles of inputs shared in the workgroup); one that defines
+// blur_denoise3.glsl, upsample.glsl: tiles of inputs shared in the workgroup); one that defines
 // AO_PASS_WRITES_QUADS writes 2 x 2 pixels per invocation (aogen::pixels_per_invocation):
 // dispatch it over ceil(width / 2) x ceil(height / 2).
 //
@@ -13,7 +13,8 @@
 // rgba8 (for OpenGL ES 3.1, which has no r8 image format), r32f or rgba16f. The value
 // written is ao_output(ao_pass(pixel), pixel), finite and in [0, 1], in .r; multi-channel
 // formats get (ao, 0, 0, 1), or with AO_BENT_NORMALS (ao, encoded bent normal)
-// (common/core.glsl's ao_value and ao_output_texel).
+// (common/core.glsl's ao_value and ao_output_texel), or with AO_WRITE_EDGES -- the AO pass of
+// a -denoise3 variant -- (ao, right edge, lower edge, 1) (common/edges.glsl).
 //
 // AO_DIAGNOSTICS (codegen::options::diagnostics) adds binding AO_BINDING_RAW, an r32f
 // storage image of the same size that receives ao_pass(pixel) itself, before the guard:
@@ -87,6 +88,10 @@ void main()
 #if defined(AO_DIAGNOSTICS)
     imageStore(u_raw, pixel, vec4(ao_value_ao(ao)));
 #endif
-    imageStore(u_output, pixel, ao_output_texel(ao, pixel));
+    vec4 texel = ao_output_texel(ao, pixel);
+#if defined(AO_WRITE_EDGES)
+    texel.yz = ao_edges(pixel); // common/edges.glsl: the 3 x 3 denoise's edges, beside the AO
+#endif
+    imageStore(u_output, pixel, texel);
 }
 #endif

@@ -16,7 +16,7 @@
 //     ssao_output        how SSAO turns its occlusion sum into AO
 //     ssao_range_check   how SSAO weights an occluding sample by its depth difference
 //     ssao_decisions     whether SSAO's per-sample decisions are smooth weights or steps
-//     blur_mode          the denoise pass: bilateral, box, denoise or none
+//     blur_mode          the denoise pass: bilateral, box, denoise, denoise3 or none
 //     bilateral_depth    the bilateral blur's depth term
 //     upsample_mode      how a half-resolution target reaches the screen
 //     multi_bounce_mode  whether, and with which albedo, the last pass adds multi-bounce light
@@ -25,7 +25,7 @@
 //     #include <aogen/axes.hpp>
 //     aogen::to_name(aogen::blur_mode::box);                  // "box"
 //     aogen::blur_mode_from_name("gaussian", "--blur");
-//     // throws "--blur: 'gaussian' is not a known name (valid: bilateral, box, none, denoise)"
+//     // throws "--blur: 'gaussian' is not a known name (valid: bilateral, box, none, denoise, denoise3)"
 //
 // WHY
 //   A choice a variant makes is compiled into its shaders (a #define), so it lives on the
@@ -191,12 +191,16 @@ enum class blur_mode {
     none,       // raw AO (ssao.wgsl has no blur)
     denoise,    // ours: single-pass 5×5 edge-aware filter (blur_denoise.glsl), one pass
                 // instead of the bilateral's two, for XeGTAO's denoiser's cost
+    denoise3,   // ours: single-pass 3×3 filter of XeGTAO's kernel size (blur_denoise3.glsl) whose
+                // edges the AO pass writes beside the AO (common/edges.glsl): it reads no depth.
+                // Compute stage, no bent normals (the edges take the channels the normal would)
 };
-inline constexpr std::array<enum_name<blur_mode>, 4> blur_mode_names{{
+inline constexpr std::array<enum_name<blur_mode>, 5> blur_mode_names{{
     {blur_mode::bilateral, "bilateral"},
     {blur_mode::box, "box"},
     {blur_mode::none, "none"},
     {blur_mode::denoise, "denoise"},
+    {blur_mode::denoise3, "denoise3"},
 }};
 
 // The depth term of the bilateral blur, which stops AO bleeding across silhouettes (its

@@ -8,7 +8,7 @@
 //   — in diagnostic builds — its raw-value image and — in the last pass of a -mbg variant —
 //   the G-buffer's albedo. Which roles a pass family has, in which
 //   order, is pass_roles(family): the AO pass, the filter passes (blur_x, blur_y,
-//   blur_box, blur_denoise, upsample) that read an AO image, and the prefilter that builds the
+//   blur_box, blur_denoise, blur_denoise3, upsample) that read an AO image, and the prefilter that builds the
 //   depth MIP chain (depth_mips.hpp) the AO pass then reads. A role's binding numbers follow
 //   from its place in that table and the binding model:
 //

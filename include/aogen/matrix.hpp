@@ -18,7 +18,9 @@
 //     bilateral blur, and High (3×3) at full resolution, compute;
 //     SAO 8/16/32 taps × blur bilateral/denoise × full/half, compute;
 //     and with bent normals (-bn): GTAO 2×2, 3×3 and 4×4 at half resolution with the
-//     denoiser, GTAO 3×3 at full resolution without a blur, and VBAO's High preset, compute.
+//     denoiser, GTAO 3×3 at full resolution without a blur, and VBAO's High preset, compute;
+//     and the 3×3 denoise (-denoise3): GTAO 2×2 and 3×3 at half resolution, 3×3 at full
+//     (XeGTAO High's counts), SSAO and SAO with 16 samples at half resolution, compute.
 //
 // USAGE
 //     aogen::variant_matrix m;                  // one value per axis: the default variant
@@ -58,7 +60,7 @@ struct variant_matrix {
     std::vector<bool> fp16{false};
     std::vector<upsample_mode> upsample{upsample_mode::depth_aware};
     std::vector<multi_bounce_mode> multi_bounce{multi_bounce_mode::off};
-    std::vector<bool> bent_normals{false}; // on: GTAO and VBAO compute variants only (others skip it)
+    std::vector<bool> bent_normals{false}; // on: GTAO and VBAO compute variants only, not with denoise3 (others skip it)
     std::vector<history_mode> history{history_mode::off}; // on: variants without bent normals only (others skip it)
 };
 
@@ -119,6 +121,7 @@ inline std::vector<variant> expand(const variant_matrix& m)
         if (fp16 && t == technique::sao) continue;
         if (bn && (!has_slices(t) || stage != pipeline_stage::compute)) continue;
         if (hist != history_mode::off && bn) continue;
+        if (blur == blur_mode::denoise3 && (bn || stage != pipeline_stage::compute)) continue;
         validate(v);
         const variant c = canonical(v);
         if (seen.insert(to_name(c)).second) out.push_back(c);
@@ -176,6 +179,30 @@ inline std::vector<variant> bent_normal_default_variants()
     return out;
 }
 
+// The 3×3 denoise's share of the default matrix: beside the 5×5 denoise of the same AO in
+// the matrix above, so the report sets their errors and times side by side -- the default
+// GTAO chains (2×2, 3×3 at half resolution), XeGTAO High's counts at full resolution, and
+// the default SSAO and SAO sample counts at half resolution.
+inline std::vector<variant> denoise3_default_variants()
+{
+    variant_matrix m;
+    m.techniques = {technique::gtao};
+    m.blur = {blur_mode::denoise3};
+    std::vector<variant> out;
+    for (int n : {2, 3}) {
+        m.slices = {n}, m.steps = {n};
+        for (const variant& v : expand(m)) append_unique(out, v);
+    }
+    m.half_resolution = {false};
+    for (const variant& v : expand(m)) append_unique(out, v); // 3×3 at full resolution
+    for (technique t : {technique::ssao, technique::sao}) {
+        variant_matrix s;
+        s.techniques = {t}, s.samples = {16}, s.blur = {blur_mode::denoise3};
+        for (const variant& v : expand(s)) append_unique(out, v);
+    }
+    return out;
+}
+
 inline std::vector<variant> default_matrix()
 {
     const std::vector<blur_mode> all_blurs{blur_mode::bilateral, blur_mode::box, blur_mode::denoise, blur_mode::none};
@@ -199,6 +226,7 @@ inline std::vector<variant> default_matrix()
     sao.half_resolution = {false, true};
     for (const variant& v : expand(sao)) append_unique(out, v);
     for (const variant& v : bent_normal_default_variants()) append_unique(out, v); // last, likewise
+    for (const variant& v : denoise3_default_variants()) append_unique(out, v);    // after them, likewise
     return out;
 }
 

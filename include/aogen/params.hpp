@@ -396,6 +396,24 @@ struct blur_params {
     static constexpr int denoise_radius = 2;
     static constexpr std::array<float, denoise_radius + 1> denoise_weights{1.0f, 1.0f, 0.5f};
 
+    // The 3 × 3 denoise (blur_denoise3.glsl): weights w(x) · w(y) · edges, w over offsets
+    // −1..1 = (½, 1, ½) (ours): a 3-tap filter cannot give the 4 × 4 tile's four phases one
+    // weight each, as the 5 × 5's does; (½, 1, ½) removes its period-2 pattern entirely and
+    // halves its period-4 one; beside a = 1 its RMSE is lower on GTAO and SAO, higher on
+    // SSAO, 0.2 % lower over the five pairs of the default report (BENCHMARKS.md). Centre
+    // first, then offset 1.
+    static constexpr std::array<float, 2> denoise3_weights{1.0f, 0.5f};
+
+    // The 3 × 3 denoise's edge between neighbouring target pixels a and b, written by the AO
+    // pass (common/edges.glsl): exp(−denoise3_edge_sharpness · |z(a) − z(b)| / min(|z(a)|, |z(b)|)),
+    // z the view depth. Relative, not per world unit like linear_sharpness: the AO pass has
+    // no blur settings in its uniforms, and a relative step is what a depth buffer resolves
+    // -- the same edges at every scale of scene. 16 (ours): neighbours 1 % apart in depth
+    // weigh e^-0.16 ≈ 0.85, 10 % apart e^-1.6 ≈ 0.20, 50 % (a silhouette) e^-8 ≈ 0.0003. The
+    // default report's RMSE, 3×3 over 5×5 on the same AO, geometric mean of its five pairs:
+    // 0.992 at 16, 0.994 at 32, 1.003 at 64 (2026-12-07, BENCHMARKS.md).
+    static constexpr float denoise3_edge_sharpness = 16.0f;
+
     // The variant's blur_depth bilateral_depth::seed_raw: weight · exp(−|Δ raw depth| · raw_depth_k). Seed: 1000.
     // 0 turns the depth term off (a plain Gaussian).
     static constexpr float_range raw_depth_k_range{0.0f, 1e6f, false};

@@ -133,15 +133,20 @@ inline void validate(const options& o)
 inline constexpr const char* history_format = "rgba16f";
 
 // The format the AO passes of `v` write: o.output_format, widened to four channels for a
-// bent-normal variant, whose passes write (AO, bent normal) -- r8 becomes rgba8, the same
-// 8-bit unorm channels; rgba8 and rgba16f are kept. r32f has no four-channel format here:
-// an aogen::error naming what is valid.
+// bent-normal variant, whose passes write (AO, bent normal), and for a -denoise3 variant,
+// whose AO pass writes (AO, the edges to its right and lower neighbours: common/edges.glsl)
+// -- r8 becomes rgba8, the same 8-bit unorm channels; rgba8 and rgba16f are kept. r32f has
+// no four-channel format here: an aogen::error naming what is valid.
 inline std::string output_format_of(const variant& v, const options& o)
 {
-    if (!v.bent_normals || o.output_format == "rgba8" || o.output_format == "rgba16f") return o.output_format;
+    const bool wide = v.bent_normals || v.blur == blur_mode::denoise3;
+    if (!wide || o.output_format == "rgba8" || o.output_format == "rgba16f") return o.output_format;
     if (o.output_format == "r8") return "rgba8";
-    fail("output format", quote(o.output_format) + " has one channel, and a bent-normal variant (-bn) writes four (AO, normal)",
-         "valid with -bn: r8 (widened to rgba8), rgba8, rgba16f");
+    if (v.bent_normals)
+        fail("output format", quote(o.output_format) + " has one channel, and a bent-normal variant (-bn) writes four (AO, normal)",
+             "valid with -bn: r8 (widened to rgba8), rgba8, rgba16f");
+    fail("output format", quote(o.output_format) + " has one channel, and a -denoise3 variant's AO pass writes three (AO, right edge, lower edge)",
+         "valid with -denoise3: r8 (widened to rgba8), rgba8, rgba16f");
 }
 
 // ---------------------------------------------------------------------------------
@@ -253,12 +258,14 @@ inline std::vector<std::string> template_files_of(const variant& v, pass_kind pa
     switch (pass) {
     case pass_kind::ao:
         files.insert(files.end(), {"common/normals.glsl", "common/noise.glsl"});
+        if (v.blur == blur_mode::denoise3) files.push_back("common/edges.glsl"); // the edges blur_denoise3.glsl reads
         for (std::string& f : technique_of(v.tech).files(v)) files.push_back(std::move(f));
         break;
     case pass_kind::blur_x:
     case pass_kind::blur_y: files.push_back("blur_bilateral.glsl"); break;
     case pass_kind::blur_box: files.push_back("blur_box.glsl"); break;
     case pass_kind::blur_denoise: files.push_back("blur_denoise.glsl"); break;
+    case pass_kind::blur_denoise3: files.push_back("blur_denoise3.glsl"); break;
     case pass_kind::upsample: files.push_back("upsample.glsl"); break;
     case pass_kind::history: files.push_back("history.glsl"); break;
     case pass_kind::prefilter: files.push_back("prefilter.glsl"); return files; // its own entry point
@@ -279,7 +286,12 @@ inline std::vector<define> constants_of(const variant& v, pass_kind pass)
         c.push_back({"AO_DENOISE_RADIUS", std::to_string(blur_params::denoise_radius)});
         for (size_t i = 0; i < blur_params::denoise_weights.size(); ++i)
             c.push_back({"AO_DENOISE_WEIGHT_" + std::to_string(i), glsl_float(blur_params::denoise_weights[i])});
+    } else if (pass == pass_kind::blur_denoise3) {
+        for (size_t i = 0; i < blur_params::denoise3_weights.size(); ++i)
+            c.push_back({"AO_DENOISE3_WEIGHT_" + std::to_string(i), glsl_float(blur_params::denoise3_weights[i])});
     }
+    if (pass == pass_kind::ao && v.blur == blur_mode::denoise3)
+        c.push_back({"AO_EDGE_SHARPNESS", glsl_float(blur_params::denoise3_edge_sharpness)});
     if (pass == pass_kind::ao && has_prefilter_pass(v)) c.push_back({"AO_MIP_LEVEL_OFFSET", glsl_float(depth_mips::level_offset)});
     if (pass == pass_kind::ao)
         for (define& d : technique_of(v.tech).constants(v)) c.push_back(std::move(d));
@@ -312,6 +324,7 @@ inline std::vector<define> defines_of(const variant& v, pass_kind pass)
         d.push_back(choice_define("TECHNIQUE", names::name_of(technique_names, v.tech, "technique")));
         d.push_back(choice_define("NORMALS", names::name_of(normal_source_names, v.normals, "normals")));
         if (v.fp16) d.push_back({"AO_FP16", ""});
+        if (v.blur == blur_mode::denoise3) d.push_back({"AO_WRITE_EDGES", ""}); // common/edges.glsl
         for (define& t : technique_of(v.tech).defines(v)) d.push_back(std::move(t));
     } else if (pass == pass_kind::blur_x || pass == pass_kind::blur_y) {
         d.push_back(choice_define("BILATERAL_DEPTH", names::name_of(bilateral_depth_names, v.blur_depth, "bilateral depth")));

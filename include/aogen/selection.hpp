@@ -89,6 +89,7 @@ inline feature_list features(const variant& v, const scene_needs* scene = nullpt
     detail::feature(f, v.blur == blur_mode::bilateral, "bilateral blur", blur_why);
     detail::feature(f, v.blur == blur_mode::box, "box blur", blur_why);
     detail::feature(f, v.blur == blur_mode::denoise, "edge-aware denoise", blur_why);
+    detail::feature(f, v.blur == blur_mode::denoise3, "3x3 denoise of the AO pass's edges", blur_why);
     f.compiled.push_back(std::string("depth: ") + names::name_of(depth_convention_names, v.depth, "depth"));
     f.compiled.push_back(std::string("projection: ") + names::name_of(projection_kind_names, v.projection, "projection"));
     f.compiled.push_back(v.half_resolution ? "half resolution" : "full resolution");

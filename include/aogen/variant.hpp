@@ -193,6 +193,12 @@ inline void validate(const variant& v)
              "valid: gtao, vbao, or off");
     if (v.bent_normals && v.stage != pipeline_stage::compute)
         fail("bent normals", "need the compute stage (a fragment pass writes one channel, the AO)", "valid: off with the fragment stage");
+    if (v.blur == blur_mode::denoise3 && v.stage != pipeline_stage::compute)
+        fail("blur denoise3", "needs the compute stage (its AO pass writes the edges beside the AO, in its storage image)",
+             "valid: denoise3 with the compute stage, or denoise, bilateral, box, none with the fragment stage");
+    if (v.blur == blur_mode::denoise3 && v.bent_normals)
+        fail("blur denoise3", "is not available with bent normals (its edges take the output's channels the bent normal would)",
+             "valid: denoise3 without -bn, or denoise, bilateral, box, none with -bn");
     names::require_listed(history_mode_names, v.history, "history");
     if (v.history != history_mode::off && v.bent_normals)
         fail("history", "is not available with bent normals (the history holds the AO alone, and would blur the normal's frames apart)",
@@ -206,8 +212,8 @@ inline void validate(const variant& v)
 // A variant runs as a chain: (with a depth MIP chain) the prefilter pass that builds it, the
 // AO pass, its blur passes, then (half resolution with the depth-aware upsample) the upsample
 // pass, the only one whose output is screen-sized.
-enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample, prefilter, history };
-inline constexpr std::array<enum_name<pass_kind>, 8> pass_kind_names{{
+enum class pass_kind { ao, blur_x, blur_y, blur_box, blur_denoise, upsample, prefilter, history, blur_denoise3 };
+inline constexpr std::array<enum_name<pass_kind>, 9> pass_kind_names{{
     {pass_kind::ao, "ao"},
     {pass_kind::blur_x, "blur_x"},
     {pass_kind::blur_y, "blur_y"},
@@ -216,6 +222,7 @@ inline constexpr std::array<enum_name<pass_kind>, 8> pass_kind_names{{
     {pass_kind::upsample, "upsample"},
     {pass_kind::prefilter, "prefilter"},
     {pass_kind::history, "history"},
+    {pass_kind::blur_denoise3, "blur_denoise3"},
 }};
 
 // Does `v` blend its AO with the previous frame's in a history pass (history.glsl)?
@@ -259,6 +266,7 @@ inline std::vector<pass_kind> passes(const variant& v)
     case blur_mode::bilateral: p.insert(p.end(), {pass_kind::blur_x, pass_kind::blur_y}); break;
     case blur_mode::box: p.push_back(pass_kind::blur_box); break;
     case blur_mode::denoise: p.push_back(pass_kind::blur_denoise); break;
+    case blur_mode::denoise3: p.push_back(pass_kind::blur_denoise3); break;
     case blur_mode::none: break;
     default: names::fail_unlisted(blur_mode_names, v.blur, "blur");
     }
@@ -328,8 +336,9 @@ namespace detail {
 
 // The short spellings of the axes inside a variant name (the tables above hold the
 // long ones used by JSON and the command line).
-inline constexpr std::array<enum_name<blur_mode>, 4> blur_tokens{{
-    {blur_mode::bilateral, "bilateral"}, {blur_mode::box, "box"}, {blur_mode::none, "noblur"}, {blur_mode::denoise, "denoise"}}};
+inline constexpr std::array<enum_name<blur_mode>, 5> blur_tokens{{
+    {blur_mode::bilateral, "bilateral"}, {blur_mode::box, "box"}, {blur_mode::none, "noblur"}, {blur_mode::denoise, "denoise"},
+    {blur_mode::denoise3, "denoise3"}}};
 inline constexpr std::array<enum_name<normal_source>, 3> normal_tokens{{
     {normal_source::gbuffer_world, "gbufworld"}, {normal_source::gbuffer_view, "gbufview"},
     {normal_source::reconstructed, "recon"}}};
@@ -428,7 +437,7 @@ inline variant variant_from_name(const std::string& name)
     const std::vector<std::string> t = detail::split(name, '-');
     if (t.size() < 8)
         fail(subject, "has " + std::to_string(t.size()) + " tokens, too few",
-             "valid: ssao|sao-s<N>, gtao|vbao-<S>x<N>, half|full, bilateral|box|denoise|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
+             "valid: ssao|sao-s<N>, gtao|vbao-<S>x<N>, half|full, bilateral|box|denoise[3]|noblur, gbufworld|gbufview|recon, std|rev|revinf, "
              "persp|ortho, cs|fs, then extras; aogen list");
     variant v;
     v.tech = names::value_of(technique_names, t[0], subject + " technique");

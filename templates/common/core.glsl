@@ -29,8 +29,8 @@
 #if (defined(AO_PROJECTION_PERSPECTIVE) + defined(AO_PROJECTION_ORTHOGRAPHIC)) != 1
 #error aogen: define exactly one of AO_PROJECTION_PERSPECTIVE AO_PROJECTION_ORTHOGRAPHIC
 #endif
-#if (defined(AO_PASS_AO) + defined(AO_PASS_BLUR_X) + defined(AO_PASS_BLUR_Y) + defined(AO_PASS_BLUR_BOX) + defined(AO_PASS_BLUR_DENOISE) + defined(AO_PASS_UPSAMPLE) + defined(AO_PASS_PREFILTER) + defined(AO_PASS_HISTORY)) != 1
-#error aogen: define exactly one of AO_PASS_AO AO_PASS_BLUR_X AO_PASS_BLUR_Y AO_PASS_BLUR_BOX AO_PASS_BLUR_DENOISE AO_PASS_UPSAMPLE AO_PASS_PREFILTER AO_PASS_HISTORY
+#if (defined(AO_PASS_AO) + defined(AO_PASS_BLUR_X) + defined(AO_PASS_BLUR_Y) + defined(AO_PASS_BLUR_BOX) + defined(AO_PASS_BLUR_DENOISE) + defined(AO_PASS_BLUR_DENOISE3) + defined(AO_PASS_UPSAMPLE) + defined(AO_PASS_PREFILTER) + defined(AO_PASS_HISTORY)) != 1
+#error aogen: define exactly one of AO_PASS_AO AO_PASS_BLUR_X AO_PASS_BLUR_Y AO_PASS_BLUR_BOX AO_PASS_BLUR_DENOISE AO_PASS_BLUR_DENOISE3 AO_PASS_UPSAMPLE AO_PASS_PREFILTER AO_PASS_HISTORY
 #endif
 #if defined(AO_MIP_LEVELS) && defined(AO_PASS_AO) && (!defined(AO_BINDING_DEPTH_MIPS) || !defined(AO_MIP_LEVEL_OFFSET))
 #error aogen: an AO pass with AO_MIP_LEVELS needs AO_BINDING_DEPTH_MIPS and AO_MIP_LEVEL_OFFSET (codegen writes them)

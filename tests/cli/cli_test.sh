@@ -124,8 +124,8 @@ list)
   check "axes list every depth convention" grep -q "standard, reversed, reversed_infinite" "$work/axes.txt"
   check "axes list XeGTAO's quality presets" grep -qx "GTAO and VBAO quality presets (XeGTAO's levels; slices x steps): low 1x2 medium 2x2 high 3x3 ultra 9x3" "$work/axes.txt"
   "$aogen" list --variants >"$work/variants.txt"
-  check "the default matrix has 118 variants" test "$(wc -l <"$work/variants.txt")" -eq 118
-  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 118
+  check "the default matrix has 123 variants" test "$(wc -l <"$work/variants.txt")" -eq 123
+  check "variant names are unique" test "$(sort -u "$work/variants.txt" | wc -l)" -eq 123
   check "the seeds' point-cloud variant is in it" grep -qx "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004-step" "$work/variants.txt"
   check "VBAO's High preset is in it, at half and full resolution" grep -qx "vbao-3x3-full-bilateral-gbufworld-std-persp-cs" "$work/variants.txt"
   check "axes list vbao" grep -q "ssao | gtao | vbao" "$work/axes.txt"
@@ -237,7 +237,7 @@ generate_default)
   # real compiler: SPIR-V by spirv-val, GLSL and ESSL by glslangValidator, HLSL by
   # glslang's HLSL front end. MSL has no compiler on Linux: it must name its entry point.
   "$aogen" generate --quiet --out "$work/all"
-  check "118 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 118"
+  check "123 variants" python3 -c "import json; assert len(json.load(open('$work/all/manifest.json'))['variants']) == 123"
   cd "$work/all"
   declare -A seen
   checked=0

@@ -54,9 +54,9 @@ TEST_CASE("axes: enum names round-trip, '-' reading as '_'", "[axes]")
 TEST_CASE("axes: unknown names and values are errors naming the axis and listing the valid names", "[axes]")
 {
     CHECK(error_of([] { aogen::blur_mode_from_name("gaussian"); }) ==
-          "blur: 'gaussian' is not a known name (valid: bilateral, box, none, denoise)");
+          "blur: 'gaussian' is not a known name (valid: bilateral, box, none, denoise, denoise3)");
     CHECK(error_of([] { aogen::blur_mode_from_name("Bilateral", "--blur"); }) ==
-          "--blur: 'Bilateral' is not a known name (valid: bilateral, box, none, denoise)");
+          "--blur: 'Bilateral' is not a known name (valid: bilateral, box, none, denoise, denoise3)");
     CHECK_THAT(error_of([] { aogen::bilateral_depth_from_name(""); }),
                Contains("bilateral depth: '' is not a known name") && Contains("seed_raw, linear"));
     CHECK_THAT(error_of([] { aogen::ssao_range_check_from_name("seed"); }),
@@ -67,8 +67,8 @@ TEST_CASE("axes: unknown names and values are errors naming the axis and listing
                Contains("normals: 'world' is not a known name") && Contains("gbuffer_world, gbuffer_view, reconstructed"));
     CHECK_THAT(error_of([] { aogen::technique_from_name("hbao"); }), Contains("technique: 'hbao'") && Contains("ssao, gtao, vbao"));
 
-    CHECK(error_of([] { aogen::to_name(static_cast<aogen::blur_mode>(4)); }) ==
-          "blur: 4 is not a valid value (valid: bilateral, box, none, denoise)");
+    CHECK(error_of([] { aogen::to_name(static_cast<aogen::blur_mode>(5)); }) ==
+          "blur: 5 is not a valid value (valid: bilateral, box, none, denoise, denoise3)");
     CHECK_THAT(error_of([] { aogen::to_name(static_cast<aogen::ssao_output>(-1)); }), Contains("output: -1 is not a valid value"));
 }
 
@@ -89,7 +89,7 @@ TEST_CASE("axes: a variant holding an enum value outside its list is an error na
     CHECK_THAT(message([](variant& v) { v.blur_depth = static_cast<aogen::bilateral_depth>(2); }),
                Contains("bilateral depth: 2 is not a valid value") && Contains("(valid: seed_raw, linear)"));
     CHECK_THAT(message([](variant& v) { v.blur = static_cast<aogen::blur_mode>(-5); }),
-               Contains("blur: -5 is not a valid value") && Contains("(valid: bilateral, box, none, denoise)"));
+               Contains("blur: -5 is not a valid value") && Contains("(valid: bilateral, box, none, denoise, denoise3)"));
     CHECK_THAT(message([](variant& v) { v.upsample = static_cast<aogen::upsample_mode>(9); }), Contains("upsample: 9 is not a valid value"));
 }
 

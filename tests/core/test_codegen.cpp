@@ -62,7 +62,11 @@ std::vector<variant> broad_set()
                              "vbao-2x3-half-denoise-recon-std-persp-cs-nearest-mb", "sao-s16-full-box-gbufworld-std-persp-fs-mb",
                              // the history pass: each technique, by the camera and by motion vectors, last or before the upsample
                              "gtao-2x2-half-denoise-gbufworld-std-persp-cs-hist", "ssao-s16-full-bilateral-recon-revinf-ortho-cs-histmv",
-                             "sao-s8-half-box-gbufview-rev-persp-cs-nearest-mb-hist", "vbao-2x3-half-noblur-gbufworld-std-persp-cs-mip3-deint-histmv"})
+                             "sao-s8-half-box-gbufview-rev-persp-cs-nearest-mb-hist", "vbao-2x3-half-noblur-gbufworld-std-persp-cs-mip3-deint-histmv",
+                             // the 3x3 denoise (compute only; its AO pass writes the edges): with the upsample, with a MIP
+                             // chain, as the last pass of a multi-bounce chain
+                             "gtao-3x3-half-denoise3-recon-revinf-ortho-cs", "ssao-s16-full-denoise3-gbufworld-std-persp-cs-mip2",
+                             "sao-s16-full-denoise3-gbufworld-std-persp-cs-mb"})
         vs.push_back(variant_from_name(name));
     return vs;
 }
@@ -105,7 +109,9 @@ TEST_CASE("codegen: same variant, same bytes, a pass's source depends on its def
         }
         for (const shader_source& s : a) {
             if (s.stage == shader_stage::vertex) continue;
-            std::string key;
+            // The defines, and the format the chain's images have (a -denoise3 variant's are
+            // four channels wide in every pass, as a -bn variant's, whose define says so).
+            std::string key = "format=" + codegen::output_format_of(v, {}) + ";";
             for (const define& d : defines(v, s.pass)) key += d.name + "=" + d.value + ";";
             auto [it, inserted] = by_defines.emplace(key, s.glsl);
             if (!inserted) CHECK(it->second == s.glsl);
@@ -433,9 +439,15 @@ TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute s
         const std::vector<shader_source> explicit_default = codegen::generate(codegen::make_plan(v, codegen::options{}));
         REQUIRE(defaults.size() == explicit_default.size());
         for (size_t i = 0; i < defaults.size(); ++i) CHECK(defaults[i].glsl == explicit_default[i].glsl);
-        for (const char* format : {"r8", "rgba8", "r32f", "rgba16f"}) {
+        const std::string default_format = codegen::output_format_of(v, {}); // r8, or rgba8 where a variant widens it
+        for (const char* asked : {"r8", "rgba8", "r32f", "rgba16f"}) {
             codegen::options o;
-            o.output_format = format;
+            o.output_format = asked;
+            if (v.blur == blur_mode::denoise3 && o.output_format == "r32f") { // one channel, and its AO pass writes three
+                CHECK_THROWS_WITH(codegen::make_plan(v, o), Contains("valid with -denoise3"));
+                continue;
+            }
+            const std::string format = codegen::output_format_of(v, o);
             const std::vector<shader_source> s = codegen::generate(codegen::make_plan(v, o));
             REQUIRE(s.size() == defaults.size());
             for (size_t i = 0; i < s.size(); ++i) {
@@ -455,7 +467,7 @@ TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute s
                 // resource carries the format.
                 CHECK(contains_line(preamble(s[i].glsl), line.substr(0, line.size() - 1)));
                 std::string as_r8 = s[i].glsl;
-                as_r8.replace(as_r8.find(line), line.size(), "#define AO_OUTPUT_FORMAT r8\n");
+                as_r8.replace(as_r8.find(line), line.size(), "#define AO_OUTPUT_FORMAT " + default_format + "\n");
                 CHECK(as_r8 == defaults[i].glsl);
                 for (const codegen::resource& r : s[i].resources) {
                     if (r.role == resource_role::output) {

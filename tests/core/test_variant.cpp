@@ -3,6 +3,7 @@
 // scene selection leaves out what the scene does not need, and the default matrix is
 // the issue's set.
 #include <aogen/matrix.hpp>
+#include <aogen/plan.hpp>
 #include <aogen/quality.hpp>
 #include <aogen/selection.hpp>
 #include <aogen/variant.hpp>
@@ -20,6 +21,7 @@ namespace unity_test_variant {
 using namespace aogen;
 using aogen_test::error_of;
 using Catch::Contains;
+using Catch::EndsWith;
 
 namespace {
 
@@ -75,6 +77,34 @@ TEST_CASE("variant: the history pass is -hist or -histmv, runs after the blur an
     m.bent_normals = {false, true};
     m.history = {history_mode::off, history_mode::camera, history_mode::motion_vectors};
     CHECK(expand(m).size() == 3 + 3 + 1); // fs and cs: off, hist, histmv; cs-bn: off
+}
+
+TEST_CASE("variant: the 3x3 denoise is -denoise3, one pass after the AO pass, compute only, without bent normals, its AO pass writing rgba8", "[variant]")
+{
+    const variant v = variant_from_name("gtao-3x3-full-denoise3-gbufworld-std-persp-cs");
+    CHECK(v.blur == blur_mode::denoise3);
+    CHECK(passes(v) == std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_denoise3});
+    CHECK(passes(variant_from_name("ssao-s16-half-denoise3-gbufworld-std-persp-cs-hist")) ==
+          std::vector<pass_kind>{pass_kind::ao, pass_kind::blur_denoise3, pass_kind::history, pass_kind::upsample});
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise3-gbufworld-std-persp-fs"),
+                      EndsWith("blur denoise3: needs the compute stage (its AO pass writes the edges beside the AO, in its storage image) "
+                               "(valid: denoise3 with the compute stage, or denoise, bilateral, box, none with the fragment stage)"));
+    CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise3-gbufworld-std-persp-cs-bn"),
+                      Contains("blur denoise3: is not available with bent normals") && Contains("valid: denoise3 without -bn"));
+    // A matrix skips what cannot run.
+    variant_matrix m;
+    m.blur = {blur_mode::denoise3};
+    m.stage = {pipeline_stage::compute, pipeline_stage::fragment};
+    m.bent_normals = {false, true};
+    m.techniques = {technique::gtao};
+    CHECK(expand(m).size() == 1);
+    // Its AO pass writes (ao, right edge, lower edge): r8 widens to rgba8, r32f is refused.
+    CHECK(codegen::output_format_of(v, {}) == "rgba8");
+    codegen::options r32f;
+    r32f.output_format = "r32f";
+    CHECK_THROWS_WITH(codegen::output_format_of(v, r32f), Contains("a -denoise3 variant's AO pass writes three (AO, right edge, lower edge)") &&
+                                                              Contains("valid with -denoise3: r8 (widened to rgba8), rgba8, rgba16f"));
+    CHECK(codegen::output_format_of(variant_from_name("gtao-3x3-full-denoise-gbufworld-std-persp-cs"), r32f) == "r32f");
 }
 
 TEST_CASE("variant: the default's name is the one docs/design.md spells", "[variant]")
@@ -301,10 +331,11 @@ TEST_CASE("selection: a mesh-only scene leaves the point-cloud fallback out, and
 TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
 {
     const std::vector<variant> m = default_matrix();
-    CHECK(m.size() == 32 + 60 + 4 + 5 + 12 + 5);
-    int ssao_cs = 0, gtao_cs = 0, gtao_bent = 0, vbao_cs = 0, sao_cs = 0, fs = 0;
+    CHECK(m.size() == 32 + 60 + 4 + 5 + 12 + 5 + 5);
+    int ssao_cs = 0, gtao_cs = 0, gtao_bent = 0, vbao_cs = 0, sao_cs = 0, fs = 0, denoise3 = 0;
     for (const variant& v : m) {
-        if (v.stage == pipeline_stage::fragment) ++fs;
+        if (v.blur == blur_mode::denoise3) ++denoise3;
+        else if (v.stage == pipeline_stage::fragment) ++fs;
         else if (v.tech == technique::ssao) ++ssao_cs;
         else if (v.tech == technique::gtao) ++(v.bent_normals ? gtao_bent : gtao_cs);
         else if (v.tech == technique::vbao) ++(v.bent_normals ? gtao_bent : vbao_cs);
@@ -316,6 +347,7 @@ TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
     CHECK(vbao_cs == 5);
     CHECK(sao_cs == 12); // 3 tap counts x bilateral/denoise x full/half
     CHECK(fs == 4);
+    CHECK(denoise3 == 5); // GTAO 2x2, 3x3 half and 3x3 full, SSAO and SAO s16 half
     // VBAO last, so that the others keep their order: the quality presets, then High at full resolution.
     std::vector<std::string> vbao;
     for (size_t i = 96; i < 101; ++i) vbao.push_back(to_name(m[i]));
@@ -326,7 +358,10 @@ TEST_CASE("matrix: the default matrix is the issue's set", "[variant][matrix]")
     // SAO after VBAO, then the bent-normal variants.
     CHECK(to_name(m[101]) == "sao-s8-full-bilateral-gbufworld-std-persp-cs");
     CHECK(to_name(m[112]) == "sao-s32-half-denoise-gbufworld-std-persp-cs");
-    CHECK(to_name(m.back()) == "vbao-3x3-half-bilateral-gbufworld-std-persp-cs-bn");
+    CHECK(to_name(m[117]) == "vbao-3x3-half-bilateral-gbufworld-std-persp-cs-bn");
+    // The 3x3 denoise's variants last.
+    CHECK(to_name(m[118]) == "gtao-2x2-half-denoise3-gbufworld-std-persp-cs");
+    CHECK(to_name(m.back()) == "sao-s16-half-denoise3-gbufworld-std-persp-cs");
 }
 
 TEST_CASE("quality: XeGTAO's four levels by name, applied to GTAO and VBAO only, and named back", "[variant][quality]")

@@ -1,5 +1,5 @@
-// The denoise blur and the depth-aware upsample, each against a CPU implementation of its
-// formula (blur_denoise.glsl's and upsample.glsl's headers) applied to the GPU's own input:
+// The denoise blurs (5 x 5 and 3 x 3) and the depth-aware upsample, each against a CPU
+// implementation of its formula (blur_denoise.glsl's, blur_denoise3.glsl's and upsample.glsl's headers) applied to the GPU's own input:
 // the AO of the same variant without the pass (blur none / upsample nearest), whose AO pass
 // compiles to the same shader, so both sides filter the same 8-bit values.
 #include "harness.hpp"
@@ -97,6 +97,43 @@ std::vector<double> denoise_on_cpu(const scene& s, const variant& v, const std::
     return out;
 }
 
+// blur_denoise3.glsl on the CPU, with the edges of common/edges.glsl: `in` is the target
+// (tw × th), a target pixel's depth is its full pixel's. An edge between neighbours is
+// exp(-16 |Δz| / min |z|), stored in 8 bits; a side tap weighs 1/2 times its edge, a diagonal
+// 1/4 times the mean of its two paths' products (row then column, column then row).
+std::vector<double> denoise3_on_cpu(const scene& s, const variant& v, const std::vector<float>& in, int tw, int th)
+{
+    // Written here rather than read from params.hpp (the shader's source), so a change shows.
+    const double W[] = {1.0, 0.5}, sharpness = 16.0;
+    const int k = v.half_resolution ? 2 : 1;
+    auto z_at = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= tw || y >= th) return std::nan("");
+        return std::fabs(s.z[pixel(s.W, std::min(x * k, s.W - 1), std::min(y * k, s.H - 1))]);
+    };
+    auto edge = [&](int ax, int ay, int bx, int by) { // what the AO pass stores: 8-bit unorm
+        const double za = z_at(ax, ay), zb = z_at(bx, by);
+        if (std::isnan(za) || std::isnan(zb)) return 0.0;
+        return std::round(std::exp(-sharpness * std::fabs(za - zb) / std::min(za, zb)) * 255.0) / 255.0;
+    };
+    std::vector<double> out(in.size());
+    for (int y = 0; y < th; ++y)
+        for (int x = 0; x < tw; ++x) {
+            double sum = in[pixel(tw, x, y)], weight = 1;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (dx == 0 && dy == 0) continue;
+                    const int qx = x + dx, qy = y + dy;
+                    const double e = dy == 0   ? edge(x, y, qx, y)
+                                     : dx == 0 ? edge(x, y, x, qy)
+                                               : 0.5 * (edge(x, y, qx, y) * edge(qx, y, qx, qy) + edge(x, y, x, qy) * edge(x, qy, qx, qy));
+                    const double w = W[std::abs(dx)] * W[std::abs(dy)] * e;
+                    if (w > 0) sum += w * in[pixel(tw, qx, qy)], weight += w;
+                }
+            out[pixel(tw, x, y)] = sum / weight; // background: no edges, its own 1
+        }
+    return out;
+}
+
 // upsample.glsl on the CPU: `in` is the half-resolution target (tw × th).
 std::vector<double> upsample_on_cpu(const scene& s, const std::vector<float>& in, int tw, int th)
 {
@@ -141,6 +178,36 @@ size_t require_equal(const std::vector<float>& gpu, const std::vector<double>& c
     return moved;
 }
 
+// A variant whose last pass is its blur: `blur` at `half` resolution (no upsample: the
+// blur's own output), in tiles that are not square (8 x 4) and that the 64x40 screen is not
+// a multiple of at half resolution.
+variant filter_variant(technique t, pipeline_stage stage, bool half, blur_mode blur)
+{
+    variant v;
+    v.tech = t, v.stage = stage, v.half_resolution = half;
+    v.upsample = upsample_mode::nearest;
+    v.blur = blur;
+    v.workgroup_x = 8, v.workgroup_y = 4;
+    return v;
+}
+
+using filter_on_cpu = std::vector<double> (*)(const scene&, const variant&, const std::vector<float>&, int, int);
+
+// `v`'s chain (AO pass, then `pass`) equals `cpu` applied to the AO of its twin without a blur
+// (whose AO pass computes the same AO), and moves enough pixels that a pass doing nothing fails.
+void require_filter_of_raw(vulkan::context& ctx, const scene& s, const variant& v, const char* pass, filter_on_cpu cpu)
+{
+    variant raw = v;
+    raw.blur = blur_mode::none;
+    INFO(to_name(v));
+    const vulkan::chain_result in = chain_under_test(ctx, raw).run(s.g, settings_for(s.proj));
+    const vulkan::chain_result out = chain_under_test(ctx, v).run(s.g, settings_for(s.proj));
+    REQUIRE(out.passes == std::vector<std::string>{"ao", pass});
+    REQUIRE(out.width == in.width);
+    const size_t moved = require_equal(out.ao, cpu(s, v, in.ao, in.width, in.height), in.ao, in.width);
+    CHECK(moved > in.ao.size() / 20); // the noise pattern is there to remove
+}
+
 } // namespace
 
 TEST_CASE("vulkan: the denoise pass is blur_denoise.glsl's 5x5 edge-aware filter of the AO pass's output (edges along a row, then a column)")
@@ -150,22 +217,18 @@ TEST_CASE("vulkan: the denoise pass is blur_denoise.glsl's 5x5 edge-aware filter
     const scene s;
     for (pipeline_stage stage : {pipeline_stage::compute, pipeline_stage::fragment})
         for (technique t : {technique::ssao, technique::gtao})
-            for (bool half : {false, true}) {
-                variant v;
-                v.tech = t, v.stage = stage, v.half_resolution = half;
-                v.upsample = upsample_mode::nearest; // the denoise pass's own output
-                v.blur = blur_mode::denoise;
-                v.workgroup_x = 8, v.workgroup_y = 4; // tiles that are not square, and the 64x40 screen not a multiple of them at half resolution
-                variant raw = v;
-                raw.blur = blur_mode::none;
-                INFO(to_name(v));
-                const vulkan::chain_result in = chain_under_test(*ctx, raw).run(s.g, settings_for(s.proj));
-                const vulkan::chain_result out = chain_under_test(*ctx, v).run(s.g, settings_for(s.proj));
-                REQUIRE(out.passes == std::vector<std::string>{"ao", "blur_denoise"});
-                REQUIRE(out.width == in.width);
-                const size_t moved = require_equal(out.ao, denoise_on_cpu(s, v, in.ao, in.width, in.height), in.ao, in.width);
-                CHECK(moved > in.ao.size() / 20); // the noise pattern is there to remove
-            }
+            for (bool half : {false, true}) require_filter_of_raw(*ctx, s, filter_variant(t, stage, half, blur_mode::denoise), "blur_denoise", denoise_on_cpu);
+    require_clean(*ctx);
+}
+
+TEST_CASE("vulkan: the 3x3 denoise is blur_denoise3.glsl's filter of the AO pass's output, with the edges the AO pass wrote (common/edges.glsl)")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const scene s;
+    for (technique t : {technique::ssao, technique::gtao})
+        for (bool half : {false, true})
+            require_filter_of_raw(*ctx, s, filter_variant(t, pipeline_stage::compute, half, blur_mode::denoise3), "blur_denoise3", denoise3_on_cpu);
     require_clean(*ctx);
 }
 

@@ -69,8 +69,8 @@ inline std::string fetch_floor_replacement(const std::string& path)
             if (file) text += floor_replacement_file(file, path);
         return text;
     }
-    const std::array<const char*, 7> replaced{"common/normals.glsl", "common/slices.glsl", "blur_bilateral.glsl", "blur_box.glsl",
-                                              "blur_denoise.glsl",   "upsample.glsl",      "prefilter.glsl"};
+    const std::array<const char*, 8> replaced{"common/normals.glsl", "common/slices.glsl", "blur_bilateral.glsl", "blur_box.glsl",
+                                              "blur_denoise.glsl",   "blur_denoise3.glsl", "upsample.glsl",      "prefilter.glsl"};
     if (std::find(replaced.begin(), replaced.end(), path) == replaced.end()) return "";
     return floor_replacement_file(path.substr(path.rfind('/') + 1), path); // floor/ is flat: common/normals.glsl is normals.glsl
 }
@@ -88,6 +88,7 @@ inline std::string bandwidth_floor_replacement(const std::string& path)
         {"common/normals.glsl", "bandwidth/normals.glsl"}, {"common/slices.glsl", "bandwidth/slices.glsl"},
         {"blur_bilateral.glsl", "bandwidth/blur.glsl"},
         {"blur_box.glsl", "bandwidth/blur.glsl"},          {"blur_denoise.glsl", "bandwidth/blur.glsl"},
+        {"blur_denoise3.glsl", "bandwidth/blur_ao_only.glsl"}, // it reads no depth
         {"upsample.glsl", "bandwidth/upsample.glsl"},
         {"prefilter.glsl", "prefilter.glsl"}, // reads its input once already: both floors are one kernel
     };
