@@ -193,8 +193,8 @@ inline std::vector<variant> denoise3_default_variants()
         m.slices = {n}, m.steps = {n};
         for (const variant& v : expand(m)) append_unique(out, v);
     }
-    m.half_resolution = {false};
-    for (const variant& v : expand(m)) append_unique(out, v); // 3×3 at full resolution
+    m.slices = {3}, m.steps = {3}, m.half_resolution = {false}; // XeGTAO High's counts at full resolution
+    for (const variant& v : expand(m)) append_unique(out, v);
     for (technique t : {technique::ssao, technique::sao}) {
         variant_matrix s;
         s.techniques = {t}, s.samples = {16}, s.blur = {blur_mode::denoise3};

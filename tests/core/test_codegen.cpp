@@ -466,9 +466,9 @@ TEST_CASE("codegen: options::output_format becomes AO_OUTPUT_FORMAT in compute s
                 // One line differs from the default's, in the preamble, and the output
                 // resource carries the format.
                 CHECK(contains_line(preamble(s[i].glsl), line.substr(0, line.size() - 1)));
-                std::string as_r8 = s[i].glsl;
-                as_r8.replace(as_r8.find(line), line.size(), "#define AO_OUTPUT_FORMAT " + default_format + "\n");
-                CHECK(as_r8 == defaults[i].glsl);
+                std::string as_default = s[i].glsl;
+                as_default.replace(as_default.find(line), line.size(), "#define AO_OUTPUT_FORMAT " + default_format + "\n");
+                CHECK(as_default == defaults[i].glsl);
                 for (const codegen::resource& r : s[i].resources) {
                     if (r.role == resource_role::output) {
                         CHECK(r.kind == resource_kind::storage_image);
