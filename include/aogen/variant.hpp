@@ -80,6 +80,9 @@ struct variant {
     static constexpr int_range workgroup_side_range{1, 32};
     static constexpr int max_workgroup_invocations = 1024;
     int workgroup_x = 8, workgroup_y = 8;
+    // The shared memory a workgroup may use on every device: Vulkan's, ESSL 3.1's and WebGPU's
+    // guaranteed minimum (maxComputeSharedMemorySize, maxComputeWorkgroupStorageSize).
+    static constexpr int min_shared_memory_bytes = 16384;
     ssao_range_check range_check = ssao_range_check::taos; // ssao only
     ssao_output output = ssao_output::strength;            // ssao only
     // SSAO's per-sample decisions: smooth weights (ours) or the seeds' steps (axes.hpp).
@@ -145,6 +148,10 @@ inline std::atomic<unsigned long>& validations()
 
 } // namespace detail
 
+// The shared memory of the 3 × 3 denoise's tile in x × y groups (blur_denoise3.glsl's COST):
+// (2 x + 2) × (2 y + 2) texels of one 32-bit word.
+inline constexpr int denoise3_tile_bytes(int x, int y) { return (2 * x + 2) * (2 * y + 2) * 4; }
+
 inline void validate(const variant& v)
 {
     ++detail::validations();
@@ -199,6 +206,11 @@ inline void validate(const variant& v)
     if (v.blur == blur_mode::denoise3 && v.bent_normals)
         fail("blur denoise3", "is not available with bent normals (its edges take the output's channels the bent normal would)",
              "valid: denoise3 without -bn, or denoise, bilateral, box, none with -bn");
+    if (v.blur == blur_mode::denoise3 && denoise3_tile_bytes(v.workgroup_x, v.workgroup_y) > variant::min_shared_memory_bytes)
+        fail("blur denoise3",
+             "needs " + std::to_string(denoise3_tile_bytes(v.workgroup_x, v.workgroup_y)) + " bytes of shared memory in " + std::to_string(v.workgroup_x) +
+                 "x" + std::to_string(v.workgroup_y) + " groups, over the " + std::to_string(variant::min_shared_memory_bytes) + " every device has",
+             "valid: workgroups with (x + 1) * (y + 1) <= 1024, e.g. wg16x16, wg32x16");
     names::require_listed(history_mode_names, v.history, "history");
     if (v.history != history_mode::off && v.bent_normals)
         fail("history", "is not available with bent normals (the history holds the AO alone, and would blur the normal's frames apart)",
@@ -239,12 +251,14 @@ inline bool has_upsample_pass(const variant& v)
 
 // The side of the square of output pixels one invocation of `pass` writes: 2 for the
 // upsample pass in compute (one invocation per target texel, each writing the 2 × 2 screen
-// pixels it covers: upsample.glsl), 1 for every other pass. A compute pass is dispatched
-// over its output's size divided by this, rounded up.
+// pixels it covers: upsample.glsl) and for the 3 × 3 denoise (a 2 × 2 quad of target pixels
+// from one 4 × 4 window: blur_denoise3.glsl), 1 for every other pass. A compute pass is
+// dispatched over its output's size divided by this, rounded up.
 inline int pixels_per_invocation(pass_kind pass, pipeline_stage stage)
 {
     if (pass == pass_kind::prefilter) return depth_mips::pixels_per_invocation; // 2 × 2 depth texels each
-    return pass == pass_kind::upsample && stage == pipeline_stage::compute ? 2 : 1;
+    if (stage != pipeline_stage::compute) return 1;
+    return pass == pass_kind::upsample || pass == pass_kind::blur_denoise3 ? 2 : 1;
 }
 
 // The workgroup a compute pass runs in: the variant's (`variant_group`), but the

@@ -91,6 +91,13 @@ TEST_CASE("variant: the 3x3 denoise is -denoise3, one pass after the AO pass, co
                                "(valid: denoise3 with the compute stage, or denoise, bilateral, box, none with the fragment stage)"));
     CHECK_THROWS_WITH(variant_from_name("gtao-2x2-half-denoise3-gbufworld-std-persp-cs-bn"),
                       Contains("blur denoise3: is not available with bent normals") && Contains("valid: denoise3 without -bn"));
+    // Its tile of (2x + 2)(2y + 2) words fits the 16 KiB every device has up to (x + 1)(y + 1) = 1024.
+    CHECK(denoise3_tile_bytes(8, 8) == 18 * 18 * 4);
+    CHECK_NOTHROW(variant_from_name("gtao-3x3-full-denoise3-gbufworld-std-persp-cs-wg32x30"));
+    CHECK_THROWS_WITH(variant_from_name("gtao-3x3-full-denoise3-gbufworld-std-persp-cs-wg32x32"),
+                      EndsWith("blur denoise3: needs 17424 bytes of shared memory in 32x32 groups, over the 16384 every device has "
+                               "(valid: workgroups with (x + 1) * (y + 1) <= 1024, e.g. wg16x16, wg32x16)"));
+    CHECK_NOTHROW(variant_from_name("gtao-3x3-full-denoise-gbufworld-std-persp-cs-wg32x32"));
     // A matrix skips what cannot run.
     variant_matrix m;
     m.blur = {blur_mode::denoise3};
