@@ -126,16 +126,17 @@ ao_gtao_falloff ao_gtao_falloff_of(float max_distance)
 //   sample counts, never where it is.
 float ao_gtao_horizon_cos(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, ao_gtao_falloff f, float unoccluded)
 {
-    // On screen (NaN fails); all() of the four tests, not &&, which branches.
-    if (!all(bvec4(greaterThanEqual(pos, vec2(0.0)), lessThan(pos, vec2(ao_depth_size()))))) return unoccluded;
     // The surface the sample lands on (common/slices.glsl's ao_slice_tap_surface), `pixels`
     // from the pixel: near it, on a plane, its point under pos on the slice line, at a
-    // silhouette the nearest texel's own point; farther, the texel's own point.
+    // silhouette the nearest texel's own point; farther, the texel's own point. Read first,
+    // before any test (ao_slice_tap_surface says why).
     float depth;
     vec2 at;
     ivec2 q;
-    if (!ao_slice_tap_surface(pos, pixels, depth, at, q)) return unoccluded;
-    if (q == centre_pixel) return unoccluded;
+    bool surface = ao_slice_tap_surface(pos, pixels, depth, at, q);
+    // On screen (NaN fails); all() of the four tests, not &&, which branches.
+    if (!all(bvec4(greaterThanEqual(pos, vec2(0.0)), lessThan(pos, vec2(ao_depth_size()))))) return unoccluded;
+    if (!surface || q == centre_pixel) return unoccluded;
     vec3 w = ao_view_position_at(at, depth) - P;
     float along_view = dot(w, V);
     float length_squared = dot(w, w);

@@ -193,11 +193,13 @@ uint ao_vbao_sample(vec2 pos, float pixels, ivec2 centre_pixel, vec3 P, vec3 V, 
     // the border texels' depth at a point half a texel away -- off the surface, above it as
     // often as below, and above it a sector's worth on a steep plane (GTAO's horizon moves
     // by little there; a sector is 1/32 of a slice).
-    if (!(pos.x >= 0.5 && pos.y >= 0.5 && pos.x <= float(size.x) - 0.5 && pos.y <= float(size.y) - 0.5)) return 0u;
+    // (The surface is read first, before any test: common/slices.glsl's ao_slice_tap_surface.)
     float depth;
     vec2 at;
     ivec2 q;
-    if (!ao_slice_tap_surface(pos, pixels, depth, at, q) || q == centre_pixel) return 0u; // common/slices.glsl, as gtao.glsl
+    bool surface = ao_slice_tap_surface(pos, pixels, depth, at, q);
+    if (!all(bvec4(greaterThanEqual(pos, vec2(0.5)), lessThanEqual(pos, vec2(size) - 0.5)))) return 0u;
+    if (!surface || q == centre_pixel) return 0u; // common/slices.glsl, as gtao.glsl
     vec3 front = ao_view_position_at(at, depth);
     vec3 w = front - P;
     float distance = length(w);

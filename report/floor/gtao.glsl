@@ -2,20 +2,20 @@
 // fetches and the noise rotation, then, for each of AO_GTAO_SLICES slices rotated by the
 // noise, AO_GTAO_STEPS samples on each side along the slice's screen direction at
 // j / STEPS of the radius in pixels -- the positions gtao.glsl reads, each what
-// common/slices.glsl's ao_slice_tap_surface fetches there (a 2x2 gather near the pixel, one
-// texel from AO_SLICE_TEXEL_CENTRE_PIXELS on) -- and no horizon, no slice integral.
+// common/slices.glsl's ao_slice_tap_surface fetches there (the four texels around it, read
+// before any test of the tap) -- and no horizon, no slice integral.
 
-// What ao_slice_tap_surface fetches for a tap at `pos`, `distance` pixels from the pixel.
+// What ao_slice_tap_surface fetches for a tap at `pos`, `distance` pixels from the pixel:
+// the four texels around pos at its level, read first, then counted only on screen, as
+// gtao.glsl's ao_gtao_horizon_cos tests it after the read.
 float ao_floor_slice_tap_fetches(vec2 pos, float distance)
 {
-    ivec2 size = ao_depth_size();
-    if (!(pos.x >= 0.0 && pos.y >= 0.0 && pos.x < float(size.x) && pos.y < float(size.y))) return 0.0;
-    if (!ao_slice_tap_reads_texel(distance)) return ao_floor_surface_fetches(pos, distance);
+    vec2 f, at;
     float depth;
-    vec2 at;
     ivec2 texel;
-    ao_depth_texel(pos, depth, at, texel);
-    return depth;
+    vec4 g = ao_depth_around(pos, ao_tap_level(distance), f, depth, at, texel);
+    bool on_screen = all(bvec4(greaterThanEqual(pos, vec2(0.0)), lessThan(pos, vec2(ao_depth_size()))));
+    return on_screen ? g.x + g.y + g.z + g.w : 0.0;
 }
 
 // ao_value (common/core.glsl): with bent normals the output's normal channels are written too.

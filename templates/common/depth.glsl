@@ -325,6 +325,21 @@ float ao_depth_bilinear(vec4 g, vec2 f)
     return ao_lerp(ao_lerp(g.w, g.z, f.x), ao_lerp(g.x, g.y, f.x), f.y);
 }
 
+// ao_depth_at's decision, from what ao_depth_around read around `pos` -- the four texels `g`,
+// pos's place `f` between their centres, and pos's own texel's `depth` at its centre `at` --
+// for a caller that reads first and decides after (common/slices.glsl's ao_slice_tap_surface):
+// the plane's depth under pos itself (at = pos) between four texels of one plane, else the own
+// texel's as read; false on background.
+bool ao_depth_at_quad(vec4 g, vec2 f, vec2 pos, inout float depth, inout vec2 at)
+{
+    if (ao_is_background(depth)) return false;
+    if (any(ao_is_background(g))) return true;
+    if (ao_depth_off_plane(g.w, g.z, g.x, g.y)) return true; // not one plane (d00, d10, d01, d11)
+    depth = ao_depth_bilinear(g, f);
+    at = pos;
+    return true;
+}
+
 // The raw depth of the surface a sample at screen position `pos` (full-resolution pixels,
 // centres at +0.5) lands on, and `at`, the screen position that depth belongs to; false on
 // background. `nearest` gets pos's texel.
@@ -351,13 +366,7 @@ bool ao_depth_at(vec2 pos, int level, out float depth, out vec2 at, out ivec2 ne
 {
     vec2 f;
     vec4 g = ao_depth_around(pos, level, f, depth, at, nearest);
-    float d00 = g.w, d10 = g.z, d01 = g.x, d11 = g.y;
-    if (ao_is_background(depth)) return false;
-    if (any(ao_is_background(g))) return true;
-    if (ao_depth_off_plane(d00, d10, d01, d11)) return true; // not one plane
-    depth = ao_depth_bilinear(g, f);
-    at = pos;
-    return true;
+    return ao_depth_at_quad(g, f, pos, depth, at);
 }
 
 #if defined(AO_DEPTH_PLANE_BAND)
@@ -428,7 +437,7 @@ bool ao_depth_readings(vec2 pos, int level, out float texel_depth, out vec2 texe
 // The surface point of the texel under screen position `pos` (full-resolution pixels): its
 // own depth at its centre (at, and nearest, the texel); false on background. One fetch, no
 // plane test: a true surface point, but up to 0.71 pixels from pos (common/slices.glsl's
-// ao_slice_tap_surface says where that is good enough).
+// ao_slice_tap_surface says where that is good enough; fragment passes read far taps so).
 bool ao_depth_texel(vec2 pos, out float depth, out vec2 at, out ivec2 nearest)
 {
     nearest = clamp(ivec2(floor(pos)), ivec2(0), ao_depth_size() - 1);
@@ -471,7 +480,7 @@ int ao_tap_level(float offset)
 
 #if defined(AO_SLICE_TEXEL_CENTRE_PIXELS)
 // Does a slice tap `distance` pixels from its pixel read its texel at the centre
-// (ao_depth_texel) rather than ao_depth_at? From AO_SLICE_TEXEL_CENTRE_PIXELS on, unless a
+// (ao_depth_texel's point) rather than ao_depth_at? From AO_SLICE_TEXEL_CENTRE_PIXELS on, unless a
 // depth MIP chain gives it a coarser level (common/slices.glsl's ao_slice_tap_surface says why).
 bool ao_slice_tap_reads_texel(float distance)
 {

@@ -51,15 +51,29 @@ float ao_slice_step_pixels(int j, int steps, float radius_pixels, float frame_st
 // a texel's depth taken up to half a texel from its centre lies above a grazing floor or a
 // wide lens's edges and reads as an occluder (issue 11).
 //   From AO_SLICE_TEXEL_CENTRE_PIXELS on (aogen::slice_taps), the texel under pos at its
-// centre (ao_depth_texel): a true surface point, whose direction from P leaves the slice's
+// centre (ao_depth_texel's point): a true surface point, whose direction from P leaves the slice's
 // plane by at most 0.71 / distance radians. On an open plane that can lift a horizon a
 // little above the hemisphere's edge, where the slice integral is flat: the change is of
-// second order, below 1/255. One fetch instead of a gather, a plane test and a bilinear mix.
-// Taps that read the depth MIP chain (level >= 1) keep its reading.
+// second order, below 1/255. No plane test and no bilinear mix. Taps that read the depth MIP
+// chain (level >= 1) keep its reading.
+//   Compute passes take both readings from one read, made first, before any decision: the
+// four texels around pos (ao_depth_around, one gather), among which is pos's own texel -- the
+// one whose centre is within half a texel, floor(pos), ao_depth_texel's. A read behind a
+// branch waits for the branch; one ahead of every test of the tap lets the GPU have a step's
+// taps in flight together (callers read first too: an off-screen pos reads clamped border
+// texels, which are never used). Fragment passes have no gather (ESSL 3.00: four fetches for
+// the four texels) and keep one fetch for a far tap.
 bool ao_slice_tap_surface(vec2 pos, float distance, out float depth, out vec2 at, out ivec2 nearest)
 {
+#if defined(AO_STAGE_COMPUTE)
+    vec2 f;
+    vec4 g = ao_depth_around(pos, ao_tap_level(distance), f, depth, at, nearest);
+    if (ao_slice_tap_reads_texel(distance)) return !ao_is_background(depth);
+    return ao_depth_at_quad(g, f, pos, depth, at);
+#else
     if (ao_slice_tap_reads_texel(distance)) return ao_depth_texel(pos, depth, at, nearest);
     return ao_depth_at(pos, ao_tap_level(distance), depth, at, nearest);
+#endif
 }
 
 // Slice s of `count`: the screen direction `dir` (pixels, y down) at angle s * pi / count,
