@@ -22,12 +22,12 @@ V=$V,vbao-3x3-half-bilateral-gbufworld-std-persp-cs,ssao-s16-half-bilateral-gbuf
 run() { # $1 label, $2 binary directory
   clocks
   echo "== $1" >> $L
-  timeout 170 $2/aogen_report --size 1920x1080 --rays 1024 --scenes $S --variants $V --motion-variants none --no-feature-saving \
+  timeout 150 $2/aogen_report --size 1920x1080 --rays 1024 --scenes $S --variants $V --motion-variants none --no-feature-saving \
     --no-fetch-floor --out /tmp/$1 >> $L 2>&1
   echo "rc $?" >> $L
   clocks
+  (cd /tmp && tar -czf $OUT/$1.tar.gz $1/results.json 2>>$L) # each run's as it ends: a call cut short keeps what ran
 }
 run after1 $B
 run before /tmp/before/bin
 run after2 $B
-cd /tmp && tar -czf $OUT/session11.tar.gz after1/results.json before/results.json after2/results.json 2>>$L
