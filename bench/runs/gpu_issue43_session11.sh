@@ -28,6 +28,7 @@ run() { # $1 label, $2 binary directory
   clocks
   (cd /tmp && tar -czf $OUT/$1.tar.gz $1/results.json 2>>$L) # each run's as it ends: a call cut short keeps what ran
 }
-run after1 $B
-run before /tmp/before/bin
-run after2 $B
+# RUNS (default "after1 before after2"): which, in order -- "after1 before" where device time is short.
+for r in ${RUNS:-after1 before after2}; do
+  case $r in before) run before /tmp/before/bin ;; *) run $r $B ;; esac
+done
