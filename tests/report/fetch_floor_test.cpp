@@ -35,9 +35,15 @@ uint32_t instructions(const aogen::codegen::shader_source& s, std::map<std::stri
     return cache[s.glsl] = c.refl.spirv_instructions;
 }
 
+// Does the shader write a 2 x 2 quad per invocation (entry_compute.glsl's AO_PASS_WRITES_QUADS)?
+bool writes_quads(const aogen::codegen::shader_source& s)
+{
+    return s.glsl.find("#define AO_PASS_WRITES_QUADS") != std::string::npos;
+}
+
 } // namespace
 
-TEST_CASE("report: every default-matrix variant's floors compile, bind like the variant and are smaller, the bandwidth floor the smallest")
+TEST_CASE("report: every default-matrix variant's floors compile, bind like the variant, write its pixels per invocation and are smaller, the bandwidth floor the smallest")
 {
     using aogen_report::floor_kind;
     std::map<std::string, uint32_t> compiled;
@@ -56,6 +62,9 @@ TEST_CASE("report: every default-matrix variant's floors compile, bind like the 
                 CHECK(floor->stage == aogen::shader_stage::compute);
                 CHECK(floor->pass == twin[i].pass);
                 CHECK(same_resources(floor->resources, twin[i].resources));
+                // Dispatched by the pass's pixels_per_invocation, a floor writes what its pass
+                // writes per invocation: a 2 x 2 quad where the pass does, else one pixel.
+                CHECK(writes_quads(*floor) == writes_quads(twin[i]));
                 CHECK(instructions(*floor, compiled) < instructions(twin[i], compiled));
             }
             INFO(bandwidth[i].name);
