@@ -9,6 +9,8 @@
 //   DIR/manifest.json       bindings, uniform layouts, features and what was left out
 //   DIR/aogen_variants.hpp  SPIR-V as uint32_t arrays, the uniform structs (C++, with
 //                           static_asserts), binding constants
+//   DIR/ts/                 with --targets wgsl,ts: the variants as one TypeScript module for a
+//                           WebGPU engine (aogen.ts, package.json, tsconfig.json; ts_module.hpp)
 // All of it is built in memory first; files are written only when everything compiled,
 // each to a temporary name and renamed, and a file whose bytes would not change is not
 // rewritten. Identical sources (variants sharing an AO pass) are compiled once. ESSL
@@ -18,6 +20,7 @@
 #include <aogen_tools/files.hpp>
 #include <aogen_tools/options.hpp>
 #include "struct_json.hpp"
+#include "ts_module.hpp"
 #include <aogen_tools/variant_spec.hpp>
 
 #include <aogen/codegen.hpp>
@@ -96,6 +99,7 @@ inline nlohmann::ordered_json history_entry(const variant& v)
 class variant_generator {
 public:
     std::vector<compile::target> targets;
+    bool typescript = false; // --targets ...,ts: the TypeScript module (ts_module.hpp), from the WGSL
     std::map<std::string, std::string> files; // path relative to DIR → bytes
     nlohmann::ordered_json manifest = {{"variants", nlohmann::ordered_json::array()}};
     std::string header;
@@ -215,9 +219,17 @@ public:
             }
         entry["passes"] = passes;
         manifest["variants"].push_back(entry);
+        if (typescript) {
+            std::vector<std::string> texts;
+            for (const codegen::shader_source& s : wgsl_sources) texts.push_back(wgsl_.at(s.glsl).text);
+            ts_module_.add(p, texts);
+        }
         header += "namespace " + ns + " {\ninline constexpr const char name[] = \"" + name + "\";\n" + ns_body +
                   "} // namespace " + ns + "\n\n";
     }
+
+    // The TypeScript module's files (DIR/ts/), when asked for.
+    std::map<std::string, std::string> typescript_files() const { return typescript ? ts_module_.files() : std::map<std::string, std::string>{}; }
 
     std::string header_text() const
     {
@@ -259,6 +271,7 @@ private:
         compile::reflection refl; // of naga's SPIR-V of the text
     };
     std::map<std::string, translated_wgsl> wgsl_; // by WebGPU-model GLSL source
+    ts::module ts_module_;
 
     bool wants(compile::target t) const { return targets_include(t); }
 
@@ -319,7 +332,8 @@ struct generate_command {
         CLI::App* sub = app.add_subcommand("generate", "Generate shader variants for every target, a manifest and a C++ header");
         sub->add_option("--variants", spec, "A variant spec (JSON: \"variants\" names and/or \"matrices\")")->check(not_empty("a variant spec file"));
         sub->add_option("--scene", scene, "What the renderer has and needs (JSON); selects each variant's features")->check(not_empty("a scene file"));
-        sub->add_option("--targets", targets, "Comma-separated: " + compile::target_list() + " (wgsl needs Node.js: scripts/install-deps.sh)")
+        sub->add_option("--targets", targets,
+                        "Comma-separated: " + compile::target_list() + ", and ts with wgsl (the TypeScript module; wgsl needs Node.js: scripts/install-deps.sh)")
             ->capture_default_str();
         sub->add_option("--out", out, "Output directory")->required()->check(not_empty("a directory path"));
         sub->add_flag("--quiet", quiet, "No progress on stderr");
@@ -331,8 +345,12 @@ struct generate_command {
     {
         require_writable_folder(out, "--out"); // before minutes of compiling, not after
         variant_generator g;
-        for (const std::string& t : split_list(targets)) g.targets.push_back(compile::target_from_name(t, "--targets"));
-        if (g.targets.empty()) fail("--targets", "is empty", "valid: " + compile::target_list());
+        for (const std::string& t : split_list(targets))
+            if (t == "ts") g.typescript = true;
+            else g.targets.push_back(compile::target_from_name(t, "--targets"));
+        if (g.targets.empty()) fail("--targets", "is empty", "valid: " + compile::target_list() + ", ts with wgsl");
+        if (g.typescript && !g.targets_include(compile::target::wgsl))
+            fail("--targets", "ts without wgsl", "valid: ts with wgsl, e.g. --targets wgsl,ts: the TypeScript module holds the WGSL");
         std::vector<variant> variants;
         for (const std::string& n : variant_names) append_unique(variants, variant_from_name(n));
         if (!spec.empty())
@@ -358,6 +376,7 @@ struct generate_command {
         }
         g.files["manifest.json"] = g.manifest.dump(2) + "\n";
         g.files["aogen_variants.hpp"] = g.header_text();
+        for (const auto& [path, text] : g.typescript_files()) g.files[path] = text;
         file_set set(out);
         for (const auto& [path, bytes] : g.files) set.add(path, bytes);
         const size_t written = set.commit().size();

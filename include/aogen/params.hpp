@@ -78,6 +78,29 @@ inline std::string field(std::string_view prefix, std::string_view name)
 
 } // namespace detail
 
+// One float setting of a params struct: its name (as error messages, JSON and the TypeScript
+// module spell it), the field and its range. Each struct's table (ssao_float_settings, ...,
+// after the struct) lists its float settings in the order validate() checks them: validate()
+// walks the table, and `aogen generate --targets ts` declares the TypeScript settings from it
+// (name, default, range), so the two cannot disagree.
+template <class P>
+struct float_setting {
+    const char* name;
+    float P::*field;
+    float_range range;
+};
+
+namespace detail {
+
+// require_in for each of `table`'s settings of `p`, in the table's order.
+template <class P, std::size_t N>
+void require_settings(const P& p, const std::array<float_setting<P>, N>& table, std::string_view prefix)
+{
+    for (const float_setting<P>& s : table) require_in(field(prefix, s.name), p.*s.field, s.range);
+}
+
+} // namespace detail
+
 // ---------------------------------------------------------------------------------
 // SSAO
 // ---------------------------------------------------------------------------------
@@ -152,6 +175,15 @@ struct ssao_params {
     // Seed of the noise tile's random numbers: any value.
     std::uint32_t noise_seed = 2;
 };
+
+// ssao_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<ssao_params>, 5> ssao_float_settings{{
+    {"radius", &ssao_params::radius, ssao_params::radius_range},
+    {"bias", &ssao_params::bias, ssao_params::bias_range},
+    {"strength", &ssao_params::strength, ssao_params::strength_range},
+    {"power", &ssao_params::power, ssao_params::power_range},
+    {"intensity", &ssao_params::intensity, ssao_params::intensity_range},
+}};
 
 // Constants of ssao.wgsl's point-cloud fallback (seed 004), on raw depth-buffer values
 // of a standard [0, 1] depth buffer (templates convert them for other conventions).
@@ -272,6 +304,15 @@ struct gtao_params {
     float strength = 1.109375f;
 };
 
+// gtao_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<gtao_params>, 5> gtao_float_settings{{
+    {"radius", &gtao_params::radius, gtao_params::radius_range},
+    {"thickness_bias", &gtao_params::thickness_bias, gtao_params::thickness_bias_range},
+    {"falloff_range", &gtao_params::falloff_range, gtao_params::falloff_range_range},
+    {"thin_occluder", &gtao_params::thin_occluder, gtao_params::thin_occluder_range},
+    {"strength", &gtao_params::strength, gtao_params::strength_range},
+}};
+
 // ---------------------------------------------------------------------------------
 // VBAO
 // ---------------------------------------------------------------------------------
@@ -317,6 +358,13 @@ struct vbao_params {
     static constexpr float_range strength_range{0.0f, 100.0f, true};
     float strength = 1.28125f;
 };
+
+// vbao_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<vbao_params>, 3> vbao_float_settings{{
+    {"radius", &vbao_params::radius, vbao_params::radius_range},
+    {"thickness", &vbao_params::thickness, vbao_params::thickness_range},
+    {"strength", &vbao_params::strength, vbao_params::strength_range},
+}};
 
 // ---------------------------------------------------------------------------------
 // SAO
@@ -368,6 +416,14 @@ struct sao_params {
     // The paper's 0.01 (world units squared at a radius of about 1).
     static constexpr float epsilon = 0.01f;
 };
+
+// sao_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<sao_params>, 4> sao_float_settings{{
+    {"radius", &sao_params::radius, sao_params::radius_range},
+    {"bias", &sao_params::bias, sao_params::bias_range},
+    {"intensity", &sao_params::intensity, sao_params::intensity_range},
+    {"contrast", &sao_params::contrast, sao_params::contrast_range},
+}};
 
 // ---------------------------------------------------------------------------------
 // Blur
@@ -430,6 +486,12 @@ struct blur_params {
     float linear_sharpness = 10.0f;
 };
 
+// blur_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<blur_params>, 2> blur_float_settings{{
+    {"raw_depth_k", &blur_params::raw_depth_k, blur_params::raw_depth_k_range},
+    {"linear_sharpness", &blur_params::linear_sharpness, blur_params::linear_sharpness_range},
+}};
+
 // ---------------------------------------------------------------------------------
 // Validation
 // ---------------------------------------------------------------------------------
@@ -441,11 +503,7 @@ inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
 {
     using detail::field;
     using P = ssao_params;
-    require_in(field(prefix, "radius"), p.radius, P::radius_range);
-    require_in(field(prefix, "bias"), p.bias, P::bias_range);
-    require_in(field(prefix, "strength"), p.strength, P::strength_range);
-    require_in(field(prefix, "power"), p.power, P::power_range);
-    require_in(field(prefix, "intensity"), p.intensity, P::intensity_range);
+    detail::require_settings(p, ssao_float_settings, prefix);
 
     const auto& len = P::kernel_name_length_range;
     bool well_formed = p.kernel.size() >= static_cast<std::size_t>(len.lo) &&
@@ -462,40 +520,22 @@ inline void validate(const ssao_params& p, std::string_view prefix = "ssao")
 
 inline void validate(const gtao_params& p, std::string_view prefix = "gtao")
 {
-    using detail::field;
-    using P = gtao_params;
-    require_in(field(prefix, "radius"), p.radius, P::radius_range);
-    require_in(field(prefix, "thickness_bias"), p.thickness_bias, P::thickness_bias_range);
-    require_in(field(prefix, "falloff_range"), p.falloff_range, P::falloff_range_range);
-    require_in(field(prefix, "thin_occluder"), p.thin_occluder, P::thin_occluder_range);
-    require_in(field(prefix, "strength"), p.strength, P::strength_range);
+    detail::require_settings(p, gtao_float_settings, prefix);
 }
 
 inline void validate(const vbao_params& p, std::string_view prefix = "vbao")
 {
-    using detail::field;
-    using P = vbao_params;
-    require_in(field(prefix, "radius"), p.radius, P::radius_range);
-    require_in(field(prefix, "thickness"), p.thickness, P::thickness_range);
-    require_in(field(prefix, "strength"), p.strength, P::strength_range);
+    detail::require_settings(p, vbao_float_settings, prefix);
 }
 
 inline void validate(const sao_params& p, std::string_view prefix = "sao")
 {
-    using detail::field;
-    using P = sao_params;
-    require_in(field(prefix, "radius"), p.radius, P::radius_range);
-    require_in(field(prefix, "bias"), p.bias, P::bias_range);
-    require_in(field(prefix, "intensity"), p.intensity, P::intensity_range);
-    require_in(field(prefix, "contrast"), p.contrast, P::contrast_range);
+    detail::require_settings(p, sao_float_settings, prefix);
 }
 
 inline void validate(const blur_params& p, std::string_view prefix = "blur")
 {
-    using detail::field;
-    using P = blur_params;
-    require_in(field(prefix, "raw_depth_k"), p.raw_depth_k, P::raw_depth_k_range);
-    require_in(field(prefix, "linear_sharpness"), p.linear_sharpness, P::linear_sharpness_range);
+    detail::require_settings(p, blur_float_settings, prefix);
 }
 
 // ---------------------------------------------------------------------------------
@@ -513,9 +553,14 @@ struct finalize_params {
     float albedo = 0.5f;
 };
 
+// finalize_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<finalize_params>, 1> finalize_float_settings{{
+    {"albedo", &finalize_params::albedo, finalize_params::albedo_range},
+}};
+
 inline void validate(const finalize_params& p, std::string_view prefix = "finalize")
 {
-    require_in(detail::field(prefix, "albedo"), p.albedo, finalize_params::albedo_range);
+    detail::require_settings(p, finalize_float_settings, prefix);
 }
 
 // ---------------------------------------------------------------------------------
@@ -626,16 +671,20 @@ struct history_params {
     motion_convention motion;
 };
 
+// history_params's float settings, in validate()'s order (float_setting).
+inline constexpr std::array<float_setting<history_params>, 5> history_float_settings{{
+    {"blend", &history_params::blend, history_params::blend_range},
+    {"range", &history_params::range, history_params::range_range},
+    {"min_max_widening", &history_params::min_max_widening, history_params::min_max_widening_range},
+    {"variance_gamma", &history_params::variance_gamma, history_params::variance_gamma_range},
+    {"depth_tolerance", &history_params::depth_tolerance, history_params::depth_tolerance_range},
+}};
+
 inline void validate(const history_params& p, std::string_view prefix = "history")
 {
     using detail::field;
-    using P = history_params;
-    require_in(field(prefix, "blend"), p.blend, P::blend_range);
+    detail::require_settings(p, history_float_settings, prefix);
     names::require_listed(history_clamp_names, p.clamp, field(prefix, "clamp"));
-    require_in(field(prefix, "range"), p.range, P::range_range);
-    require_in(field(prefix, "min_max_widening"), p.min_max_widening, P::min_max_widening_range);
-    require_in(field(prefix, "variance_gamma"), p.variance_gamma, P::variance_gamma_range);
-    require_in(field(prefix, "depth_tolerance"), p.depth_tolerance, P::depth_tolerance_range);
     names::require_listed(motion_units_names, p.motion.units, field(prefix, "motion.units"));
     names::require_listed(motion_direction_names, p.motion.direction, field(prefix, "motion.direction"));
     names::require_listed(motion_y_names, p.motion.y, field(prefix, "motion.y"));
