@@ -222,7 +222,7 @@ public:
         if (typescript) {
             std::vector<std::string> texts;
             for (const codegen::shader_source& s : wgsl_sources) texts.push_back(wgsl_.at(s.glsl).text);
-            ts_module_.add(p, texts);
+            ts_module_.add(plan_for(p, compile::target::wgsl), texts);
         }
         header += "namespace " + ns + " {\ninline constexpr const char name[] = \"" + name + "\";\n" + ns_body +
                   "} // namespace " + ns + "\n\n";

@@ -9,7 +9,8 @@
 //                     the data generated here -- the settings with their defaults and ranges
 //                     (params.hpp's float_setting tables), and per variant its passes: WGSL,
 //                     entry point, workgroup, pixels per invocation, the uniform block laid
-//                     out under WGSL's rules
+//                     out under WGSL's rules, the bindings (bind group 0) -- and AoChain, which
+//                     makes the pipelines and records the passes on a GPUDevice
 //     package.json    an npm package a project can depend on by path (types: aogen.ts)
 //     tsconfig.json   `tsc --strict`, as the tests compile it
 //   module.add(plan, wgsl texts) collects a variant; module.files() gives the three files.
@@ -152,9 +153,31 @@ inline std::string block_text(const layout::struct_layout& l)
     return out + "\n    ] }";
 }
 
+// A storage image's WebGPU format, from its GLSL format qualifier.
+inline std::string webgpu_format(const std::string& qualifier)
+{
+    if (qualifier == "rgba8") return "rgba8unorm";
+    if (qualifier == "rgba16f") return "rgba16float";
+    if (qualifier == "r32f") return "r32float";
+    fail("ts module", "a storage image of format " + qualifier, "valid: rgba8, rgba16f or r32f, WebGPU's storage formats here");
+}
+
+// A shader's resources as passes.ts's BindingInfo list (bind group 0).
+inline std::string bindings_text(const std::vector<codegen::resource>& resources)
+{
+    std::string out = "[";
+    for (const codegen::resource& r : resources)
+        out += std::string(out.size() > 1 ? ", " : "") + "{ binding: " + std::to_string(r.binding) + ", role: " +
+               literal(std::string(names::name_of(resource_role_names, r.role, "role"))) + ", kind: " +
+               literal(std::string(names::name_of(codegen::resource_kind_names, r.kind, "kind"))) +
+               (r.kind == codegen::resource_kind::storage_image ? ", format: " + literal(webgpu_format(r.format)) : "") + " }";
+    return out + "]";
+}
+
 class module {
 public:
-    // Adds planned variant `p`; `wgsl` holds the WGSL of each of its shaders, in p.shaders()'s order.
+    // Adds variant `p`, planned for the wgsl target (its webgpu binding model: plan_for(plan,
+    // target::wgsl)); `wgsl` holds the WGSL of each of its shaders, in p.shaders()'s order.
     void add(const codegen::plan& p, const std::vector<std::string>& wgsl)
     {
         const variant& v = p.variant();
@@ -173,7 +196,8 @@ public:
                       (compute ? "" : ", vertexWgsl: wgsl[" + vertex + "]!") + ", entryPoint: \"main\"" +
                       (compute ? ", workgroupSize: [" + std::to_string(s.workgroup.first) + ", " + std::to_string(s.workgroup.second) + ", 1]" : "") +
                       ", pixelsPerInvocation: " + std::to_string(s.pixels_per_invocation) +
-                      ", screenSized: " + (s.pass == pass_kind::upsample ? "true" : "false") + ", block: blocks[" + block + "]! },";
+                      ", screenSized: " + (s.pass == pass_kind::upsample ? "true" : "false") + ", block: blocks[" + block + "]!" +
+                      ",\n            bindings: " + bindings_text(s.resources) + " },";
         }
         const bool slices = has_slices(v.tech);
         variants_ += "    " + literal(p.name()) + ": {\n        name: " + literal(p.name()) + ", technique: " +
@@ -235,7 +259,7 @@ private:
   "type": "module",
   "types": "./aogen.ts",
   "exports": { ".": "./aogen.ts" },
-  "peerDependencies": { "@webgpu/types": ">=0.1.40" }
+  "peerDependencies": { "@webgpu/types": ">=0.1.60" }
 }
 )";
 
@@ -248,7 +272,7 @@ private:
     "noUncheckedIndexedAccess": true,
     "declaration": true,
     "outDir": "dist",
-    "types": []
+    "types": ["@webgpu/types"]
   },
   "files": ["aogen.ts"]
 }

@@ -10,149 +10,15 @@
 // layouts the module carries), kernel::generate, noise::rotations, spiral::taps, temporal's
 // frame_rotation and step_offset. An emitted-text mutant aimed at "ts:aogen.ts" is planted in
 // the generated module before it is compiled (tests/mutants/).
-#include <aogen/chain_inputs.hpp>
+#include "ts/ts_support.hpp"
+
 #include <aogen/kernel.hpp>
-#include <aogen/plan.hpp>
 #include <aogen/random.hpp>
 #include <aogen/spiral.hpp>
-#include <aogen/wgsl.hpp>
 
-#include "mutants/mutants.hpp"
-
-#include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
-
-#include <cstring>
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#ifndef AOGEN_CLI_PATH
-#error "tests/CMakeLists.txt defines AOGEN_CLI_PATH (the aogen command line) and AOGEN_TS_TESTS_DIR"
-#endif
+using namespace aogen_test;
 
 namespace {
-
-using namespace aogen;
-using nlohmann::json;
-
-// The variants the module is generated for (see the header).
-const std::vector<std::string> module_variants{
-    "ssao-s16-half-bilateral-gbufworld-std-persp-cs",
-    "gtao-2x2-half-denoise-gbufworld-std-persp-cs",
-    "vbao-3x3-half-bilateral-gbufworld-std-persp-cs",
-    "sao-s16-half-denoise-gbufworld-std-persp-cs",
-    "ssao-s16-half-bilateral-gbufworld-std-persp-fs-rawdepth-step-nearest",
-    "gtao-2x3-half-bilateral-gbufworld-std-persp-fs-rawdepth-nearest",
-    "gtao-2x2-half-denoise-gbufworld-std-persp-cs-histmv",
-    "gtao-1x4-half-noblur-gbufworld-std-persp-fs-hist",
-    "ssao-s8-full-box-gbufview-rev-persp-cs-mb",
-    "gtao-3x3-full-denoise3-gbufview-revinf-persp-cs",
-    "sao-s32-full-bilateral-recon-std-ortho-cs",
-    "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004-step",
-};
-
-// Runs `args` (args[0] a path); what it wrote to stdout and stderr; an aogen::error unless it exits 0.
-std::string run(std::vector<std::string> args, const std::string& log)
-{
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) fail("ts test", "cannot write " + log, "valid: a writable $TMPDIR");
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        ::dup2(fd, STDOUT_FILENO), ::dup2(fd, STDERR_FILENO);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
-    }
-    ::close(fd);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    const std::string said = wgsl::detail::read_all(log);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(args[0], "failed: " + said.substr(0, 2000), "valid: exit status 0");
-    return said;
-}
-
-// The module generated, a mutant planted, compiled by tsc --strict: its folder.
-struct compiled_module {
-    wgsl::detail::scratch dir;
-    wgsl::tools tools = wgsl::find_tools();
-    std::string js() const { return dir.path() + "/ts/dist/aogen.js"; }
-
-    compiled_module()
-    {
-        std::vector<std::string> args{AOGEN_CLI_PATH, "generate", "--quiet", "--targets", "wgsl,ts", "--out", dir.path()};
-        args.insert(args.end(), module_variants.begin(), module_variants.end());
-        run(args, dir.file("generate.log"));
-        const std::string ts = dir.path() + "/ts/aogen.ts";
-        wgsl::detail::write_all(ts, aogen_test::emitted_under_test(wgsl::detail::read_all(ts), "ts:aogen.ts"));
-        run({tools.node, tools.dir + "/node_modules/typescript/bin/tsc", "-p", dir.path() + "/ts"}, dir.file("tsc.log"));
-    }
-
-    // ts_cases.mjs over `cases`: its results.
-    json results(const json& cases) const
-    {
-        wgsl::detail::write_all(dir.file("cases.json"), cases.dump());
-        run({tools.node, std::string(AOGEN_TS_TESTS_DIR) + "/ts_cases.mjs", js(), dir.file("cases.json"), dir.file("results.json")},
-            dir.file("cases.log"));
-        return json::parse(wgsl::detail::read_all(dir.file("results.json")));
-    }
-};
-
-const compiled_module& the_module()
-{
-    static const compiled_module m;
-    return m;
-}
-
-std::string hex(const uint8_t* bytes, size_t n)
-{
-    static const char digits[] = "0123456789abcdef";
-    std::string out;
-    for (size_t i = 0; i < n; ++i) out += digits[bytes[i] >> 4], out += digits[bytes[i] & 15];
-    return out;
-}
-std::string hex(const std::vector<uint8_t>& b) { return hex(b.data(), b.size()); }
-std::string hex(const std::vector<vec4>& v) { return hex(reinterpret_cast<const uint8_t*>(v.data()), v.size() * sizeof(vec4)); }
-
-json matrix_json(const mat4& m)
-{
-    json a = json::array();
-    for (int i = 0; i < 16; ++i) a.push_back(m[i / 4][i % 4]);
-    return a;
-}
-
-json camera_json(const uniforms::camera& c) { return {{"worldToView", matrix_json(c.world_to_view)}, {"proj", matrix_json(c.proj)}}; }
-
-template <class P, std::size_t N>
-json floats_json(const P& p, const std::array<float_setting<P>, N>& table)
-{
-    json j = json::object();
-    for (const float_setting<P>& s : table) j[s.name] = p.*s.field;
-    return j;
-}
-
-// `s` as the module's SettingsInput: every setting, by params.hpp's names.
-json settings_json(const ao_settings& s)
-{
-    json j;
-    j["ssao"] = floats_json(s.ssao, ssao_float_settings);
-    j["ssao"]["kernel"] = s.ssao.kernel, j["ssao"]["kernel_seed"] = s.ssao.kernel_seed;
-    j["ssao"]["noise_size"] = s.ssao.noise_size, j["ssao"]["noise_seed"] = s.ssao.noise_seed;
-    j["gtao"] = floats_json(s.gtao, gtao_float_settings);
-    j["vbao"] = floats_json(s.vbao, vbao_float_settings);
-    j["sao"] = floats_json(s.sao, sao_float_settings);
-    j["blur"] = floats_json(s.blur, blur_float_settings);
-    j["finalize"] = floats_json(s.finalize, finalize_float_settings);
-    j["history"] = floats_json(s.history, history_float_settings);
-    j["history"]["clamp"] = names::name_of(history_clamp_names, s.history.clamp, "clamp");
-    j["history"]["motion"] = {{"units", names::name_of(motion_units_names, s.history.motion.units, "units")},
-                              {"direction", names::name_of(motion_direction_names, s.history.motion.direction, "direction")},
-                              {"y", names::name_of(motion_y_names, s.history.motion.y, "y")}};
-    return j;
-}
 
 // Deterministic draws for the sweep.
 struct draws {

@@ -18,6 +18,8 @@ export interface PassInfo {
     readonly screenSized: boolean;
     /** Its uniform block, laid out under WGSL's rules. */
     readonly block: BlockLayout;
+    /** What it binds, bind group 0 (bindGroupLayoutDescriptor). */
+    readonly bindings: readonly BindingInfo[];
 }
 
 /** A variant of the module: its name (aogen's canonical name) and what a chain of it needs. */

@@ -1,0 +1,132 @@
+// tests/ts/ts_dawn_test.cpp — the TypeScript module's AoChain on Dawn against the SPIR-V on the
+// Vulkan harness, bit for bit.
+//
+// For each of the module's twelve variants (ts_support.hpp: every block, both stages, both
+// resolutions, a history variant of each stage), tests/ts/ts_dawn.mjs makes the chain with
+// AoChain.create, writes its uniforms and noise tile with update() -- bytes the module computes
+// itself -- and records it with record() on Dawn (npm webgpu, its OpenGL ES backend on Mesa's
+// llvmpipe); C++ gives only the G-buffer. The oracle is the variant's SPIR-V run on the Vulkan
+// harness with the same settings: every pixel equal, frame after frame for the history variants
+// (their history kept by AoChain across record() calls) -- and the same bytes as aogen's own Dawn
+// runner (wgsl_dawn.hpp: C++'s uniform bytes, aogen_wgsl.mjs's pipelines).
+//
+// One difference, explained: the 3x3 denoise (gtao-3x3-full-denoise3-...) on Dawn gives one pixel
+// of the 2560 1/255 from the SPIR-V's, with aogen's own Dawn runner as with the module's chain
+// (byte for byte the same), while its WGSL translated back by naga runs bit for bit like the
+// SPIR-V on the Vulkan harness (checked here): the WGSL means what the SPIR-V means, and the
+// rounding differs in Dawn's OpenGL ES path (Tint's GLSL ES on Mesa's GL driver, where the
+// other passes agree to the bit). Found by this test (the WGSL tests' variants hold no
+// -denoise3); the 3x3's WGSL on a GPU's Vulkan or D3D backend is not measured here.
+#include "ts/ts_support.hpp"
+#include "vulkan/harness.hpp"
+
+#include <aogen/ao_difference.hpp>
+#include <aogen/emitted.hpp>
+#include <aogen/vulkan/wgsl_round_trip.hpp>
+#include <aogen/wgsl_dawn.hpp>
+
+using namespace aogen_test;
+
+namespace {
+
+// `g` as ts_dawn.mjs reads it, and `frames` as its chain.json.
+void write_chain(const std::string& dir, const std::string& variant_name, const vulkan::gbuffer& g, const std::vector<vulkan::chain_settings>& frames)
+{
+    const auto floats = [&](const std::string& name, const std::vector<float>& v) {
+        if (!v.empty()) wgsl::detail::write_all(dir + "/" + name, std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float)));
+    };
+    floats("depth.f32", g.depth), floats("normals.f32", g.normals), floats("albedo.f32", g.albedo), floats("motion.f32", g.motion);
+    json j = {{"variant", variant_name}, {"width", g.width}, {"height", g.height}, {"frames", json::array()}};
+    for (const vulkan::chain_settings& s : frames) {
+        json f = {{"camera", camera_json(s.camera)}, {"settings", settings_json(s)}, {"frame", s.frame},
+                  {"frameSequence", temporal::to_name(s.frame_sequence)}, {"resetHistory", s.reset_history}};
+        if (s.previous_camera) f["previousCamera"] = camera_json(*s.previous_camera);
+        j["frames"].push_back(f);
+    }
+    wgsl::detail::write_all(dir + "/chain.json", j.dump());
+}
+
+// The frames a variant is run for: one still frame, or for a history variant four with the
+// camera moving sideways (harness.hpp's sideways_frames, as settings).
+// The variants whose Dawn run differs from the SPIR-V's (see the header), at most this much.
+const std::vector<std::string> dawn_rounds_differently{"gtao-3x3-full-denoise3-gbufview-revinf-persp-cs"};
+
+std::vector<vulkan::chain_settings> frames_for(const variant& v, const vulkan::chain_settings& still)
+{
+    if (!has_history_pass(v)) return {still};
+    std::vector<vulkan::chain_settings> out;
+    for (uint32_t f = 0; f < 4; ++f) {
+        vulkan::chain_settings s = still;
+        s.frame = f;
+        s.camera.world_to_view.columns[3].x -= 0.02f * float(f);
+        s.previous_camera = still.camera;
+        s.previous_camera->world_to_view.columns[3].x -= 0.02f * float(f > 0 ? f - 1 : 0);
+        out.push_back(s);
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("ts: AoChain on Dawn, every uniform byte its own, gives the SPIR-V's AO bit for bit, frame after frame")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    const compiled_module& m = the_module();
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    size_t compared = 0;
+    for (const std::string& name : module_variants) {
+        INFO(name);
+        const variant v = variant_from_name(name);
+        vulkan::gbuffer g = crease_in_motion(W, H, proj, -0.01f, 0.004f);
+        if (v.normals == normal_source::reconstructed) g.normals.clear();
+        if (v.multi_bounce != multi_bounce_mode::gbuffer_albedo) g.albedo.clear();
+        if (v.history != history_mode::motion_vectors) g.motion.clear();
+        vulkan::chain_settings still = settings_for(proj);
+        still.ssao.radius = 0.6f, still.gtao.radius = 0.6f; // a radius the 64 x 40 crease shows
+        if (v.projection == projection_kind::orthographic) still.camera.proj = orthographic(-1.5f, 1.5f, -1, 1, 0.1f, 100.0f);
+        const std::vector<vulkan::chain_settings> frames = frames_for(v, still);
+
+        const std::string dir = m.dir.path() + "/dawn";
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directory(dir);
+        write_chain(dir, name, g, frames);
+        run({m.tools.node, std::string(AOGEN_TS_TESTS_DIR) + "/ts_dawn.mjs", m.js(), m.tools.dir, dir}, m.dir.file("dawn.log"));
+
+        const codegen::plan p = codegen::make_plan(v);
+        std::vector<chain_inputs> inputs;
+        for (const vulkan::chain_settings& s : frames) inputs.push_back(p.inputs(s, W, H));
+        const std::vector<vulkan::chain_result> expected = spirv_frames(*ctx, vulkan::chain(*ctx, p), g, inputs);
+        // aogen's own Dawn runner (C++'s bytes, aogen_wgsl.mjs's pipelines): the module's chain must equal it to the byte.
+        const std::vector<wgsl::dawn_result> own =
+            wgsl::run_variant_frames_on_dawn(plan_for(p, compile::target::wgsl), emitted_texts(p, compile::target::wgsl), g, inputs);
+        for (size_t f = 0; f < frames.size(); ++f) {
+            INFO("frame " << f);
+            const std::string bytes = wgsl::detail::read_all(dir + "/out" + std::to_string(f) + ".bin");
+            CHECK(bytes == std::string(own[f].ao.begin(), own[f].ao.end()));
+            std::vector<float> ao(bytes.size());
+            for (size_t i = 0; i < ao.size(); ++i) ao[i] = uint8_t(bytes[i]) / 255.0f;
+            REQUIRE(ao.size() == expected[f].ao.size());
+            CHECK(*std::min_element(expected[f].ao.begin(), expected[f].ao.end()) < 0.98f); // not two blank images
+            const ao_difference d = difference_of(ao, expected[f].ao);
+            std::cout << "ts AoChain on Dawn, " << name << " frame " << f << ": " << d.identical << " of " << d.pixels
+                      << " pixels bit-identical, largest difference " << d.largest * 255 << "/255\n";
+            if (std::find(dawn_rounds_differently.begin(), dawn_rounds_differently.end(), name) == dawn_rounds_differently.end()) {
+                CHECK(first_difference(ao, expected[f].ao) == "");
+            } else {
+                CHECK(d.pixels - d.identical <= 1);
+                CHECK(d.largest <= 1.0f / 255 + 1e-6f);
+                // ... while its WGSL through naga's SPIR-V runs bit for bit like the SPIR-V.
+                vulkan::wgsl_round_trips trips({p});
+                const vulkan::gpu_gbuffer gpu(*ctx, g);
+                const vulkan::chain_result naga = vulkan::bound_chain(*ctx, *trips.passes(*ctx, p), gpu, inputs[f]).run_once();
+                CHECK(first_difference(naga.ao, expected[f].ao) == "");
+            }
+            ++compared;
+        }
+    }
+    CHECK(compared == module_variants.size() + 2 * 3); // two history variants: four frames each
+    require_clean(*ctx);
+}
+
