@@ -43,8 +43,8 @@ inline const std::vector<std::string> module_variants{
     "ssao-s64-full-noblur-recon-std-persp-fs-pc-rc004-step",
 };
 
-// Runs `args` (args[0] a path); what it wrote to stdout and stderr; an aogen::error unless it exits 0.
-inline std::string run(std::vector<std::string> args, const std::string& log)
+// Runs `args` (args[0] a path): its exit status (-1: killed) and what it wrote to stdout and stderr.
+inline std::pair<int, std::string> run_status(std::vector<std::string> args, const std::string& log)
 {
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
@@ -61,8 +61,15 @@ inline std::string run(std::vector<std::string> args, const std::string& log)
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
-    const std::string said = wgsl::detail::read_all(log);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(args[0], "failed: " + said.substr(0, 2000), "valid: exit status 0");
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, wgsl::detail::read_all(log)};
+}
+
+// run_status, and an aogen::error unless it exits 0.
+inline std::string run(std::vector<std::string> args, const std::string& log)
+{
+    const std::string program = args.at(0);
+    const auto [status, said] = run_status(std::move(args), log);
+    if (status != 0) fail(program, "failed: " + said.substr(0, 2000), "valid: exit status 0");
     return said;
 }
 
