@@ -32,7 +32,7 @@ const upload = (name, format, bpp) => {
     if (!existsSync(join(dir, name))) return undefined;
     const t = device.createTexture({ size: [w, h], format, usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
     device.queue.writeTexture({ texture: t }, floats(name), { bytesPerRow: w * bpp }, [w, h]);
-    return t.createView();
+    return t;
 };
 const ao = aogen.AoChain.create(device, chain.variant, w, h);
 const [ow, oh] = ao.outputSize;
@@ -43,8 +43,28 @@ const output = device.createTexture({
 });
 const textures = {
     depth: upload("depth.f32", "r32float", 4), normals: upload("normals.f32", "rgba32float", 16),
-    albedo: upload("albedo.f32", "rgba32float", 16), motion: upload("motion.f32", "rg32float", 8), output: output.createView(),
+    albedo: upload("albedo.f32", "rgba32float", 16), motion: upload("motion.f32", "rg32float", 8), output,
 };
+// DIR/bad.json: each a member of the textures replaced ({"depth": "rgba8unorm"}: that format,
+// {"depth": [W, H]}: that size, {"normals": null}: missing); what record() threw, in order, to DIR/bad_out.json.
+if (existsSync(join(dir, "bad.json"))) {
+    const said = JSON.parse(readFileSync(join(dir, "bad.json"), "utf8")).map((change) => {
+        const t = { ...textures };
+        for (const [key, v] of Object.entries(change)) {
+            if (v === null) delete t[key];
+            else t[key] = device.createTexture({ size: Array.isArray(v) ? v : [t[key].width, t[key].height], format: Array.isArray(v) ? t[key].format : v,
+                usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.STORAGE_BINDING });
+        }
+        ao.update(chain.frames[0]);
+        try {
+            ao.record(device.createCommandEncoder(), t);
+            return "no error";
+        } catch (e) {
+            return `${e.name}: ${e.message}`;
+        }
+    });
+    writeFileSync(join(dir, "bad_out.json"), JSON.stringify(said));
+}
 const texel = compute ? 4 : 1;
 const rowBytes = Math.ceil((ow * texel) / 256) * 256;
 for (let f = 0; f < chain.frames.length; ++f) {

@@ -7,12 +7,11 @@
 // itself -- and records it with record() on Dawn (npm webgpu, its OpenGL ES backend on Mesa's
 // llvmpipe); C++ gives only the G-buffer. The oracle is the variant's SPIR-V run on the Vulkan
 // harness with the same settings: every pixel equal, frame after frame for the history variants
-// (their history kept by AoChain across record() calls) -- and the same bytes as aogen's own Dawn
-// runner (wgsl_dawn.hpp: C++'s uniform bytes, aogen_wgsl.mjs's pipelines).
+// (their history kept by AoChain across record() calls).
 //
 // One difference, explained: the 3x3 denoise (gtao-3x3-full-denoise3-...) on Dawn gives one pixel
-// of the 2560 1/255 from the SPIR-V's, with aogen's own Dawn runner as with the module's chain
-// (byte for byte the same), while its WGSL translated back by naga runs bit for bit like the
+// of the 2560 1/255 from the SPIR-V's, with aogen's own Dawn runner (wgsl_dawn.hpp: C++'s bytes,
+// aogen_wgsl.mjs's pipelines) as with the module's chain (byte for byte the same, checked), while its WGSL translated back by naga runs bit for bit like the
 // SPIR-V on the Vulkan harness (checked here): the WGSL means what the SPIR-V means, and the
 // rounding differs in Dawn's OpenGL ES path (Tint's GLSL ES on Mesa's GL driver, where the
 // other passes agree to the bit). Found by this test (the WGSL tests' variants hold no
@@ -66,67 +65,112 @@ std::vector<vulkan::chain_settings> frames_for(const variant& v, const vulkan::c
     return out;
 }
 
-} // namespace
-
-TEST_CASE("ts: AoChain on Dawn, every uniform byte its own, gives the SPIR-V's AO bit for bit, frame after frame")
+// Variant `name` made, updated and recorded by the module's AoChain on Dawn, against its SPIR-V
+// frame by frame (see the header); how many frames were compared.
+size_t check_on_dawn(vulkan::context& ctx, const std::string& name)
 {
-    vulkan::context* ctx = shared_context();
-    if (!ctx) return;
+    INFO(name);
     const compiled_module& m = the_module();
     const int W = 64, H = 40;
     const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
-    size_t compared = 0;
-    for (const std::string& name : module_variants) {
-        INFO(name);
-        const variant v = variant_from_name(name);
-        vulkan::gbuffer g = crease_in_motion(W, H, proj, -0.01f, 0.004f);
-        if (v.normals == normal_source::reconstructed) g.normals.clear();
-        if (v.multi_bounce != multi_bounce_mode::gbuffer_albedo) g.albedo.clear();
-        if (v.history != history_mode::motion_vectors) g.motion.clear();
-        vulkan::chain_settings still = settings_for(proj);
-        still.ssao.radius = 0.6f, still.gtao.radius = 0.6f; // a radius the 64 x 40 crease shows
-        if (v.projection == projection_kind::orthographic) still.camera.proj = orthographic(-1.5f, 1.5f, -1, 1, 0.1f, 100.0f);
-        const std::vector<vulkan::chain_settings> frames = frames_for(v, still);
+    const variant v = variant_from_name(name);
+    vulkan::gbuffer g = crease_in_motion(W, H, proj, -0.01f, 0.004f);
+    if (v.normals == normal_source::reconstructed) g.normals.clear();
+    if (v.multi_bounce != multi_bounce_mode::gbuffer_albedo) g.albedo.clear();
+    if (v.history != history_mode::motion_vectors) g.motion.clear();
+    vulkan::chain_settings still = settings_for(proj);
+    still.ssao.radius = 0.6f, still.gtao.radius = 0.6f; // a radius the 64 x 40 crease shows
+    if (v.projection == projection_kind::orthographic) still.camera.proj = orthographic(-1.5f, 1.5f, -1, 1, 0.1f, 100.0f);
+    const std::vector<vulkan::chain_settings> frames = frames_for(v, still);
 
-        const std::string dir = m.dir.path() + "/dawn";
-        std::filesystem::remove_all(dir);
-        std::filesystem::create_directory(dir);
-        write_chain(dir, name, g, frames);
-        run({m.tools.node, std::string(AOGEN_TS_TESTS_DIR) + "/ts_dawn.mjs", m.js(), m.tools.dir, dir}, m.dir.file("dawn.log"));
+    const std::string dir = m.dir.path() + "/dawn";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directory(dir);
+    write_chain(dir, name, g, frames);
+    run({m.tools.node, std::string(AOGEN_TS_TESTS_DIR) + "/ts_dawn.mjs", m.js(), m.tools.dir, dir}, m.dir.file("dawn.log"));
 
-        const codegen::plan p = codegen::make_plan(v);
-        std::vector<chain_inputs> inputs;
-        for (const vulkan::chain_settings& s : frames) inputs.push_back(p.inputs(s, W, H));
-        const std::vector<vulkan::chain_result> expected = spirv_frames(*ctx, vulkan::chain(*ctx, p), g, inputs);
-        // aogen's own Dawn runner (C++'s bytes, aogen_wgsl.mjs's pipelines): the module's chain must equal it to the byte.
+    const codegen::plan p = codegen::make_plan(v);
+    std::vector<chain_inputs> inputs;
+    for (const vulkan::chain_settings& s : frames) inputs.push_back(p.inputs(s, W, H));
+    const std::vector<vulkan::chain_result> expected = spirv_frames(ctx, vulkan::chain(ctx, p), g, inputs);
+    const bool differs = std::find(dawn_rounds_differently.begin(), dawn_rounds_differently.end(), name) != dawn_rounds_differently.end();
+    for (size_t f = 0; f < frames.size(); ++f) {
+        INFO("frame " << f);
+        const std::string bytes = wgsl::detail::read_all(dir + "/out" + std::to_string(f) + ".bin");
+        std::vector<float> ao(bytes.size());
+        for (size_t i = 0; i < ao.size(); ++i) ao[i] = uint8_t(bytes[i]) / 255.0f;
+        REQUIRE(ao.size() == expected[f].ao.size());
+        CHECK(*std::min_element(expected[f].ao.begin(), expected[f].ao.end()) < 0.98f); // not two blank images
+        const ao_difference d = difference_of(ao, expected[f].ao);
+        std::cout << "ts AoChain on Dawn, " << name << " frame " << f << ": " << d.identical << " of " << d.pixels
+                  << " pixels bit-identical, largest difference " << d.largest * 255 << "/255\n";
+        if (!differs) {
+            CHECK(first_difference(ao, expected[f].ao) == "");
+            continue;
+        }
+        CHECK(d.pixels - d.identical <= 1);
+        CHECK(d.largest <= 1.0f / 255 + 1e-6f);
+        // ... the same bytes as aogen's own Dawn runner (C++'s bytes, aogen_wgsl.mjs's pipelines) ...
         const std::vector<wgsl::dawn_result> own =
             wgsl::run_variant_frames_on_dawn(plan_for(p, compile::target::wgsl), emitted_texts(p, compile::target::wgsl), g, inputs);
-        for (size_t f = 0; f < frames.size(); ++f) {
-            INFO("frame " << f);
-            const std::string bytes = wgsl::detail::read_all(dir + "/out" + std::to_string(f) + ".bin");
-            CHECK(bytes == std::string(own[f].ao.begin(), own[f].ao.end()));
-            std::vector<float> ao(bytes.size());
-            for (size_t i = 0; i < ao.size(); ++i) ao[i] = uint8_t(bytes[i]) / 255.0f;
-            REQUIRE(ao.size() == expected[f].ao.size());
-            CHECK(*std::min_element(expected[f].ao.begin(), expected[f].ao.end()) < 0.98f); // not two blank images
-            const ao_difference d = difference_of(ao, expected[f].ao);
-            std::cout << "ts AoChain on Dawn, " << name << " frame " << f << ": " << d.identical << " of " << d.pixels
-                      << " pixels bit-identical, largest difference " << d.largest * 255 << "/255\n";
-            if (std::find(dawn_rounds_differently.begin(), dawn_rounds_differently.end(), name) == dawn_rounds_differently.end()) {
-                CHECK(first_difference(ao, expected[f].ao) == "");
-            } else {
-                CHECK(d.pixels - d.identical <= 1);
-                CHECK(d.largest <= 1.0f / 255 + 1e-6f);
-                // ... while its WGSL through naga's SPIR-V runs bit for bit like the SPIR-V.
-                vulkan::wgsl_round_trips trips({p});
-                const vulkan::gpu_gbuffer gpu(*ctx, g);
-                const vulkan::chain_result naga = vulkan::bound_chain(*ctx, *trips.passes(*ctx, p), gpu, inputs[f]).run_once();
-                CHECK(first_difference(naga.ao, expected[f].ao) == "");
-            }
-            ++compared;
-        }
+        CHECK(bytes == std::string(own[f].ao.begin(), own[f].ao.end()));
+        // ... while its WGSL through naga's SPIR-V runs bit for bit like the SPIR-V.
+        vulkan::wgsl_round_trips trips({p});
+        const vulkan::gpu_gbuffer gpu(ctx, g);
+        const vulkan::chain_result naga = vulkan::bound_chain(ctx, *trips.passes(ctx, p), gpu, inputs[f]).run_once();
+        CHECK(first_difference(naga.ao, expected[f].ao) == "");
     }
-    CHECK(compared == module_variants.size() + 2 * 3); // two history variants: four frames each
+    return frames.size();
+}
+
+} // namespace
+
+TEST_CASE("ts: AoChain on Dawn, every uniform byte its own, gives the SPIR-V's AO bit for bit")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    size_t variants = 0;
+    for (const std::string& name : module_variants)
+        if (!has_history_pass(variant_from_name(name))) variants += check_on_dawn(*ctx, name);
+    CHECK(variants == module_variants.size() - 2);
     require_clean(*ctx);
 }
 
+TEST_CASE("ts: AoChain keeps a history variant's history on Dawn, bit for bit like the SPIR-V frame after frame")
+{
+    vulkan::context* ctx = shared_context();
+    if (!ctx) return;
+    size_t frames = 0;
+    for (const std::string& name : module_variants)
+        if (has_history_pass(variant_from_name(name))) frames += check_on_dawn(*ctx, name);
+    CHECK(frames == 2 * 4); // a compute and a fragment history variant, four frames each
+    require_clean(*ctx);
+}
+
+TEST_CASE("ts: AoChain refuses a texture of the wrong format or size, or a missing one, by name")
+{
+    const compiled_module& m = the_module();
+    const int W = 64, H = 40;
+    const mat4 proj = perspective(0.6f, float(W) / H, 0.1f, 100.0f);
+    const std::string name = "ssao-s16-half-bilateral-gbufworld-std-persp-cs";
+    vulkan::gbuffer g = crease(W, H, 0.6f, proj);
+    g.albedo.clear(), g.motion.clear();
+    const std::string dir = m.dir.path() + "/bad";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directory(dir);
+    write_chain(dir, name, g, {settings_for(proj)});
+    const std::vector<std::pair<json, std::string>> cases{
+        {{{"depth", "rgba8unorm"}}, "AogenError: AoChain.record textures.depth: is rgba8unorm 64x40 (valid: r32float or depth32float, 64x40)"},
+        {{{"depth", {32, 20}}}, "AogenError: AoChain.record textures.depth: is r32float 32x20 (valid: r32float or depth32float, 64x40)"},
+        {{{"normals", nullptr}}, "AogenError: AoChain.record textures.normals: is missing (" + name + " reads it) (valid: rgba16float or rgba32float, 64x40)"},
+        {{{"output", "r32float"}}, "AogenError: AoChain.record textures.output: is r32float 64x40 (valid: rgba8unorm, 64x40)"},
+        {{{"output", {32, 20}}}, "AogenError: AoChain.record textures.output: is rgba8unorm 32x20 (valid: rgba8unorm, 64x40)"},
+    };
+    json bad = json::array();
+    for (const auto& c : cases) bad.push_back(c.first);
+    wgsl::detail::write_all(dir + "/bad.json", bad.dump());
+    run({m.tools.node, std::string(AOGEN_TS_TESTS_DIR) + "/ts_dawn.mjs", m.js(), m.tools.dir, dir}, m.dir.file("bad.log"));
+    const json said = json::parse(wgsl::detail::read_all(dir + "/bad_out.json"));
+    REQUIRE(said.size() == cases.size());
+    for (size_t i = 0; i < cases.size(); ++i) CHECK(said[i].get<std::string>() == cases[i].second);
+}

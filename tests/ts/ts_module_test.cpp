@@ -121,6 +121,10 @@ TEST_CASE("ts: the module of twelve variants compiles with tsc --strict")
     for (const std::string& name : module_variants) CHECK(module.find("\"" + name + "\": {") != std::string::npos);
     CHECK(wgsl::detail::is_file(the_module().js()));
     CHECK(wgsl::detail::is_file(the_module().dir.path() + "/ts/dist/aogen.d.ts"));
+    const json package = json::parse(wgsl::detail::read_all(the_module().dir.path() + "/ts/package.json"));
+    CHECK(package.at("version") == AOGEN_PROJECT_VERSION); // aogen's own
+    CHECK(package.at("type") == "module");
+    CHECK(package.at("types") == "./aogen.ts");
 }
 
 TEST_CASE("ts: chainInputs gives plan::inputs's bytes under WGSL's rules, for a sweep of settings, cameras, frames and sizes")

@@ -76,6 +76,17 @@ inline std::string run(std::vector<std::string> args, const std::string& log)
 // The module generated, a mutant planted, compiled by tsc --strict: its folder.
 struct compiled_module {
     wgsl::detail::scratch dir;
+    // The scratch folder removes its files; its folders are removed here -- also when the
+    // constructor throws (a member is destroyed then, the object is not).
+    struct folders_removed {
+        const wgsl::detail::scratch& dir;
+        ~folders_removed()
+        {
+            if (std::getenv("AOGEN_WGSL_KEEP")) return;
+            for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+                if (e.is_directory() && !e.is_symlink()) std::filesystem::remove_all(e.path());
+        }
+    } cleanup{dir};
     wgsl::tools tools = wgsl::find_tools();
     std::string js() const { return dir.path() + "/ts/dist/aogen.js"; }
 
@@ -89,12 +100,6 @@ struct compiled_module {
         // The module's one dependency, @webgpu/types, where a project keeps it: its node_modules.
         std::filesystem::create_directory_symlink(tools.dir + "/node_modules", dir.path() + "/ts/node_modules");
         run({tools.node, tools.dir + "/node_modules/typescript/bin/tsc", "-p", dir.path() + "/ts"}, dir.file("tsc.log"));
-    }
-    ~compiled_module() // the scratch folder removes its files; the folders are removed here
-    {
-        if (std::getenv("AOGEN_WGSL_KEEP")) return;
-        for (const auto& e : std::filesystem::directory_iterator(dir.path()))
-            if (e.is_directory() && !e.is_symlink()) std::filesystem::remove_all(e.path());
     }
     compiled_module(const compiled_module&) = delete;
     compiled_module& operator=(const compiled_module&) = delete;

@@ -8,7 +8,8 @@
 //     chain.record(encoder, { depth, normals, output });              // each frame: every pass
 //
 // `output` is the chain's last target at chain.outputSize: rgba8unorm with STORAGE_BINDING for a
-// compute variant (the AO in .r), r8unorm with RENDER_ATTACHMENT for a fragment one.
+// compute variant (the AO in .r), r8unorm with RENDER_ATTACHMENT for a fragment one. Every
+// texture's format and size is checked before anything is recorded.
 
 /** One binding of a pass (bind group 0), as aogen planned it. */
 export interface BindingInfo {
@@ -42,19 +43,31 @@ export function bindGroupLayoutDescriptor(p: PassInfo): GPUBindGroupLayoutDescri
     };
 }
 
-/** What a chain reads and writes of the engine's, each frame (views of the screen's size but output's). */
+/** What a chain reads and writes of the engine's, each frame: all of the screen's size but the output. */
 export interface ChainTextures {
-    /** The depth buffer: r32float, or a depth32float texture's view. */
-    readonly depth: GPUTextureView;
+    /** The depth buffer: r32float or depth32float. */
+    readonly depth: GPUTexture;
     /** G-buffer normals (world or view, as the variant says) in .xyz: rgba16float or rgba32float. Not for -recon variants. */
-    readonly normals?: GPUTextureView;
-    /** The G-buffer's albedo in .rgb (a -mbg variant's last pass). */
-    readonly albedo?: GPUTextureView;
-    /** The renderer's motion vectors in .rg (a -histmv variant). */
-    readonly motion?: GPUTextureView;
+    readonly normals?: GPUTexture;
+    /** The G-buffer's albedo in .rgb (a -mbg variant's last pass): rgba8unorm, rgba16float or rgba32float. */
+    readonly albedo?: GPUTexture;
+    /** The renderer's motion vectors in .rg (a -histmv variant): rg16float, rg32float or rgba16float. */
+    readonly motion?: GPUTexture;
     /** The chain's output, at outputSize: rgba8unorm (compute, STORAGE_BINDING) or r8unorm (fragment, RENDER_ATTACHMENT). */
-    readonly output: GPUTextureView;
+    readonly output: GPUTexture;
 }
+
+/** ChainTextures' views, each checked (record's). */
+type TextureViews = { -readonly [K in keyof ChainTextures]?: GPUTextureView };
+
+/** The formats each of ChainTextures' members may have (the shaders read every one as floats). */
+const textureFormats: { readonly [K in keyof ChainTextures]-?: readonly GPUTextureFormat[] } = {
+    depth: ["r32float", "depth32float"],
+    normals: ["rgba16float", "rgba32float"],
+    albedo: ["rgba8unorm", "rgba16float", "rgba32float"],
+    motion: ["rg16float", "rg32float", "rgba16float"],
+    output: ["rgba8unorm", "r8unorm"],
+};
 
 interface PassState {
     readonly info: PassInfo;
@@ -109,11 +122,12 @@ export class AoChain {
     }
 
     /** Records every pass into `encoder`: the AO pass, its filters and history, the upsample. Call update() first. */
-    record(encoder: GPUCommandEncoder, t: ChainTextures): void {
+    record(encoder: GPUCommandEncoder, textures: ChainTextures): void {
         if (!this.noise) throw new AogenError("AoChain.record", "called before update()", "valid: update(chainSettings) once before the first record");
+        const t = this.views(textures);
         let previous: GPUTextureView | undefined;
         for (const p of this.passes) {
-            const output = p.target ? p.target.createView() : t.output;
+            const output = p.target ? p.target.createView() : t.output!;
             const read = p.history ? p.history[this.frames % 2]!.createView() : undefined;
             const written = p.history ? p.history[(this.frames + 1) % 2]!.createView() : undefined;
             const entries = p.info.bindings
@@ -140,6 +154,29 @@ export class AoChain {
             previous = output;
         }
         this.frames += 1;
+    }
+
+    /** `textures` checked (format, size; the ones the variant reads present) and viewed. */
+    private views(textures: ChainTextures): TextureViews {
+        const bound = new Set(this.variant.passes.flatMap((p) => p.bindings.map((b) => b.role)));
+        const needed: { readonly [K in keyof ChainTextures]-?: boolean } = {
+            depth: true, normals: bound.has("normals"), albedo: bound.has("gbuffer_albedo"), motion: bound.has("motion"), output: true,
+        };
+        const out: TextureViews = {};
+        for (const key of Object.keys(textureFormats) as (keyof ChainTextures)[]) {
+            const texture = textures[key];
+            const [w, h] = key === "output" ? this.outputSize : [this.width, this.height];
+            const formats = key === "output" ? [this.outputFormat] : textureFormats[key];
+            const valid = `valid: ${formats.join(" or ")}, ${w}x${h}`;
+            if (!texture) {
+                if (needed[key]) throw new AogenError(`AoChain.record textures.${key}`, `is missing (${this.variant.name} reads it)`, valid);
+                continue;
+            }
+            if (!formats.includes(texture.format) || texture.width !== w || texture.height !== h)
+                throw new AogenError(`AoChain.record textures.${key}`, `is ${texture.format} ${texture.width}x${texture.height}`, valid);
+            out[key] = texture.createView();
+        }
+        return out;
     }
 
     /** Frees the chain's buffers and textures (not the engine's). */
@@ -177,7 +214,7 @@ export class AoChain {
         };
     }
 
-    private resource(p: PassState, b: BindingInfo, t: ChainTextures, previous: GPUTextureView | undefined, output: GPUTextureView,
+    private resource(p: PassState, b: BindingInfo, t: TextureViews, previous: GPUTextureView | undefined, output: GPUTextureView,
                      read: GPUTextureView | undefined, written: GPUTextureView | undefined): GPUBindingResource {
         if (b.kind === "sampler") return this.sampler;
         const need = (view: GPUTextureView | undefined, what: string): GPUTextureView => {
@@ -186,7 +223,7 @@ export class AoChain {
         };
         switch (b.role) {
         case "uniforms": return { buffer: p.uniforms };
-        case "depth": return t.depth;
+        case "depth": return t.depth!;
         case "normals": return need(t.normals, "normals");
         case "noise": return this.noise!.createView();
         case "ao_input": return need(previous, "the previous pass's output");
