@@ -345,9 +345,14 @@ struct generate_command {
     {
         require_writable_folder(out, "--out"); // before minutes of compiling, not after
         variant_generator g;
+        const auto is_target = [](const std::string& t) {
+            const auto& names = compile::target_names;
+            return std::any_of(names.begin(), names.end(), [&](const auto& n) { return names::same_name(t, n.name); });
+        };
         for (const std::string& t : split_list(targets))
             if (t == "ts") g.typescript = true;
-            else g.targets.push_back(compile::target_from_name(t, "--targets"));
+            else if (is_target(t)) g.targets.push_back(compile::target_from_name(t, "--targets"));
+            else fail("--targets", quote(t) + " is not a known name", "valid: " + compile::target_list() + ", ts with wgsl");
         if (g.targets.empty()) fail("--targets", "is empty", "valid: " + compile::target_list() + ", ts with wgsl");
         if (g.typescript && !g.targets_include(compile::target::wgsl))
             fail("--targets", "ts without wgsl", "valid: ts with wgsl, e.g. --targets wgsl,ts: the TypeScript module holds the WGSL");

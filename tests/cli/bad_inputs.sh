@@ -622,6 +622,10 @@ group_generate() {
   expect_fail -m 'blurry' -- "${gen[@]}" --out out ssao-s16-half-blurry-gbufworld-std-persp-cs
   new_case unknown-target
   expect_fail -m '--targets' -m 'dxil' -- "$aogen" generate --quiet --targets spv,dxil --out out $v1
+  new_case ts-without-wgsl # the TypeScript module holds the WGSL
+  expect_fail -m '--targets' -m 'ts without wgsl' -m 'valid: ts with wgsl' -- "$aogen" generate --quiet --targets spv,ts --out out $v1
+  new_case unknown-target-names-ts
+  expect_fail -m "'typescript'" -m 'wgsl, ts with wgsl' -- "$aogen" generate --quiet --targets wgsl,typescript --out out $v1
   new_case targets-empty
   expect_fail -m '--targets' -- "$aogen" generate --quiet --targets '' --out out $v1
   new_case wgsl-fp16

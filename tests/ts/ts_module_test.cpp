@@ -254,23 +254,23 @@ TEST_CASE("ts: a setting out of range, a bad size or a variant the module lacks 
     }
 }
 
-TEST_CASE("ts: the README's pass class compiles against the module with tsc --strict")
+TEST_CASE("ts: the pass class of docs/webgpu.md compiles against the module with tsc --strict")
 {
-    const std::string readme = wgsl::detail::read_all(AOGEN_SOURCE_DIR "/README.md");
-    const size_t section = readme.find("### In a TypeScript WebGPU engine");
+    const std::string doc = wgsl::detail::read_all(AOGEN_SOURCE_DIR "/docs/webgpu.md");
+    const size_t section = doc.find("A pass of a Taos-style render graph written against the module");
     REQUIRE(section != std::string::npos);
-    const size_t open = readme.find("```ts\n", section);
+    const size_t open = doc.find("```ts\n", section);
     REQUIRE(open != std::string::npos);
-    const size_t close = readme.find("\n```\n", open);
+    const size_t close = doc.find("\n```\n", open);
     REQUIRE(close != std::string::npos);
-    const std::string code = readme.substr(open + 6, close + 1 - (open + 6));
+    const std::string code = doc.substr(open + 6, close + 1 - (open + 6));
     CHECK(code.find("AoChain.create") != std::string::npos);
     const compiled_module& m = the_module();
-    wgsl::detail::write_all(m.dir.path() + "/ts/readme_pass.ts", code);
-    wgsl::detail::write_all(m.dir.path() + "/ts/tsconfig.readme.json",
-                            R"({ "extends": "./tsconfig.json", "compilerOptions": { "noEmit": true }, "files": ["aogen.ts", "readme_pass.ts"] })");
-    const auto [status, said] = run_status({m.tools.node, m.tools.dir + "/node_modules/typescript/bin/tsc", "-p", m.dir.path() + "/ts/tsconfig.readme.json"},
-                                           m.dir.file("readme.log"));
+    wgsl::detail::write_all(m.dir.path() + "/ts/pass_class.ts", code);
+    wgsl::detail::write_all(m.dir.path() + "/ts/tsconfig.pass_class.json",
+                            R"({ "extends": "./tsconfig.json", "compilerOptions": { "noEmit": true }, "files": ["aogen.ts", "pass_class.ts"] })");
+    const auto [status, said] = run_status({m.tools.node, m.tools.dir + "/node_modules/typescript/bin/tsc", "-p", m.dir.path() + "/ts/tsconfig.pass_class.json"},
+                                           m.dir.file("pass_class.log"));
     INFO(said);
     CHECK(status == 0);
 }
