@@ -24,6 +24,7 @@
 //   ts/runtime/, not strings in C++.
 #pragma once
 
+#include <aogen/depth_mips.hpp>
 #include <aogen/error.hpp>
 #include <aogen/layout.hpp>
 #include <aogen/params.hpp>
@@ -200,7 +201,10 @@ public:
                       (compute ? "" : ", vertexWgsl: wgsl[" + vertex + "]!") + ", entryPoint: \"main\"" +
                       (compute ? ", workgroupSize: [" + std::to_string(s.workgroup.first) + ", " + std::to_string(s.workgroup.second) + ", 1]" : "") +
                       ", pixelsPerInvocation: " + std::to_string(s.pixels_per_invocation) +
-                      ", screenSized: " + (s.pass == pass_kind::upsample ? "true" : "false") + ", block: blocks[" + block + "]!" +
+                      ", screenSized: " + (s.pass == pass_kind::upsample ? "true" : "false") +
+                      // the atlas the Vulkan harness makes too (vulkan/bound_chain.hpp): for the most levels
+                      (s.pass == pass_kind::prefilter ? ", atlasLevels: " + std::to_string(depth_mips::levels_range.hi) : "") +
+                      ", block: blocks[" + block + "]!" +
                       ",\n            bindings: " + bindings_text(s.resources) + " },";
         }
         const bool slices = has_slices(v.tech);

@@ -11,11 +11,15 @@ export interface PassInfo {
     readonly wgsl: string;
     readonly vertexWgsl?: string;
     readonly entryPoint: string;
-    /** Compute: @workgroup_size; dispatch ceil(width / pixelsPerInvocation / x) x ceil(height / pixelsPerInvocation / y) groups. */
+    /** Compute: @workgroup_size; dispatch ceil(width / pixelsPerInvocation / x) x ceil(height / pixelsPerInvocation / y) groups
+     *  over its output's size -- the prefilter's over the screen's. */
     readonly workgroupSize?: readonly [number, number, number];
     readonly pixelsPerInvocation: number;
-    /** The output is the screen's size (the upsample); otherwise the AO target's. */
+    /** The output is the screen's size (the upsample); otherwise the AO target's, or the prefilter's atlas. */
     readonly screenSized: boolean;
+    /** The prefilter's (a -mip variant): its output is the r32float atlas of the depth MIP chain made for this many
+     *  levels (depthMipAtlasSize; the most a variant may have: a shorter chain lies at the same places). */
+    readonly atlasLevels?: number;
     /** Its uniform block, laid out under WGSL's rules. */
     readonly block: BlockLayout;
     /** What it binds, bind group 0 (bindGroupLayoutDescriptor). */
@@ -50,6 +54,23 @@ export function variantInfo(name: string): VariantInfo {
 /** The AO target's size for a screen of width x height: the screen's, or half of it rounded up. */
 export function targetSize(v: VariantInfo, width: number, height: number): [number, number] {
     return v.halfResolution ? [Math.floor((width + 1) / 2), Math.floor((height + 1) / 2)] : [width, height];
+}
+
+/** Level `level` of a w x h depth buffer (aogen/depth_mips.hpp's level_size): a texel covers 2^level x 2^level pixels, the last row and column fewer; at least 1 x 1. */
+function depthMipLevelSize(w: number, h: number, level: number): [number, number] {
+    const k = 2 ** level;
+    return [Math.max(1, Math.floor((w + k - 1) / k)), Math.max(1, Math.floor((h + k - 1) / k))];
+}
+
+/** The r32float atlas holding levels 1 .. levels - 1 of a w x h depth buffer (depth_mips.hpp's atlas_size): level 1 at the left,
+ *  levels 2, 3, ... stacked in a column beside it; 0 x 0 for one level. */
+export function depthMipAtlasSize(width: number, height: number, levels: number): [number, number] {
+    if (levels <= 1) return [0, 0];
+    const [w1, h1] = depthMipLevelSize(width, height, 1);
+    if (levels === 2) return [w1, h1];
+    let column = 0;
+    for (let k = 2; k < levels; ++k) column += depthMipLevelSize(width, height, k)[1];
+    return [w1 + depthMipLevelSize(width, height, 2)[0], Math.max(h1, column)];
 }
 
 /** What one frame of a chain reads besides the G-buffer (chain_settings). */

@@ -14,7 +14,7 @@
 /** One binding of a pass (bind group 0), as aogen planned it. */
 export interface BindingInfo {
     readonly binding: number;
-    /** uniforms, depth, normals, noise, ao_input, output, gbuffer_albedo, history, history_output, motion (bindings.hpp's roles). */
+    /** uniforms, depth, normals, noise, ao_input, output, depth_mips, gbuffer_albedo, history, history_output, motion (bindings.hpp's roles). */
     readonly role: string;
     readonly kind: "uniform_buffer" | "sampled_image" | "sampler" | "storage_image";
     /** A storage image's WebGPU format. */
@@ -69,13 +69,24 @@ const textureFormats: { readonly [K in keyof ChainTextures]-?: readonly GPUTextu
     output: ["rgba8unorm", "r8unorm"],
 };
 
+/** The chain's own images a pass may bind, as record() goes: the last AO pass's output, this pass's output, the history
+ *  images it reads and writes, the prefilter's atlas. */
+interface PassViews {
+    readonly previous?: GPUTextureView;
+    readonly output: GPUTextureView;
+    readonly read?: GPUTextureView;
+    readonly written?: GPUTextureView;
+    readonly atlas?: GPUTextureView;
+}
+
 interface PassState {
     readonly info: PassInfo;
     readonly layout: GPUBindGroupLayout;
     readonly compute?: GPUComputePipeline;
     readonly render?: GPURenderPipeline;
     readonly uniforms: GPUBuffer;
-    readonly size: [number, number];
+    readonly size: [number, number]; // its output's
+    readonly dispatch: [number, number]; // the size it is dispatched over: its output's, the prefilter's the screen's
     readonly target?: GPUTexture; // its output, unless it is the last pass (the engine's)
     readonly history?: [GPUTexture, GPUTexture]; // a history pass's two images, swapped each frame
 }
@@ -91,14 +102,17 @@ export class AoChain {
     private frames = 0; // recorded, for the history images' turn
 
     private constructor(private readonly device: GPUDevice, readonly variant: VariantInfo, readonly width: number, readonly height: number) {
-        if (variant.passes.some((p) => p.pass === "prefilter"))
-            throw new AogenError("AoChain", `${variant.name} has a depth MIP chain (-mip), which this module does not run yet`, "valid: variants without -mip<N>");
         const target = targetSize(variant, width, height);
         const last = variant.passes[variant.passes.length - 1]!;
         this.outputSize = last.screenSized ? [width, height] : target;
         this.outputFormat = variant.stage === "compute" ? "rgba8unorm" : "r8unorm";
         this.sampler = device.createSampler({ label: "aogen clamp", addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge" });
-        this.passes = variant.passes.map((info, i) => this.makePass(info, i === variant.passes.length - 1 ? this.outputSize : target, i === variant.passes.length - 1));
+        this.passes = variant.passes.map((info, i) => {
+            const last = i === variant.passes.length - 1;
+            if (info.atlasLevels !== undefined) return this.makePass(info, depthMipAtlasSize(width, height, info.atlasLevels), [width, height], last);
+            const size = last ? this.outputSize : target;
+            return this.makePass(info, size, size, last);
+        });
     }
 
     /** The chain of `variant` (a name of this module, or its VariantInfo) for a screen of width x height; an AogenError names a variant or size that is not valid. */
@@ -126,13 +140,15 @@ export class AoChain {
         if (!this.noise) throw new AogenError("AoChain.record", "called before update()", "valid: update(chainSettings) once before the first record");
         const t = this.views(textures);
         let previous: GPUTextureView | undefined;
+        let atlas: GPUTextureView | undefined; // the prefilter's depth MIP atlas
         for (const p of this.passes) {
             const output = p.target ? p.target.createView() : t.output!;
+            if (p.info.atlasLevels !== undefined) atlas = output;
             const read = p.history ? p.history[this.frames % 2]!.createView() : undefined;
             const written = p.history ? p.history[(this.frames + 1) % 2]!.createView() : undefined;
             const entries = p.info.bindings
                 .filter((b) => !(b.role === "history_output" && p.info.stage === "fragment"))
-                .map((b): GPUBindGroupEntry => ({ binding: b.binding, resource: this.resource(p, b, t, previous, output, read, written) }));
+                .map((b): GPUBindGroupEntry => ({ binding: b.binding, resource: this.resource(p, b, t, { previous, output, read, written, atlas }) }));
             const group = this.device.createBindGroup({ label: `aogen ${p.info.pass}`, layout: p.layout, entries });
             if (p.compute) {
                 const pass = encoder.beginComputePass({ label: `aogen ${p.info.pass}` });
@@ -140,7 +156,7 @@ export class AoChain {
                 pass.setBindGroup(0, group);
                 const [wx, wy] = p.info.workgroupSize!;
                 const ppi = p.info.pixelsPerInvocation;
-                pass.dispatchWorkgroups(Math.ceil(p.size[0] / ppi / wx), Math.ceil(p.size[1] / ppi / wy));
+                pass.dispatchWorkgroups(Math.ceil(p.dispatch[0] / ppi / wx), Math.ceil(p.dispatch[1] / ppi / wy));
                 pass.end();
             } else {
                 const attachment = (view: GPUTextureView): GPURenderPassColorAttachment => ({ view, loadOp: "clear", clearValue: [0, 0, 0, 0], storeOp: "store" });
@@ -151,7 +167,7 @@ export class AoChain {
                 pass.draw(3);
                 pass.end();
             }
-            previous = output;
+            if (p.info.atlasLevels === undefined) previous = output;
         }
         this.frames += 1;
     }
@@ -189,7 +205,7 @@ export class AoChain {
         this.noise?.destroy();
     }
 
-    private makePass(info: PassInfo, size: [number, number], last: boolean): PassState {
+    private makePass(info: PassInfo, size: [number, number], dispatch: [number, number], last: boolean): PassState {
         const d = this.device;
         const layout = d.createBindGroupLayout(bindGroupLayoutDescriptor(info));
         const pipelineLayout = d.createPipelineLayout({ bindGroupLayouts: [layout] });
@@ -197,9 +213,10 @@ export class AoChain {
         const compute = info.stage === "compute";
         const history = info.pass === "history";
         const written = compute ? textureUsage.storageBinding : textureUsage.renderAttachment;
-        const format: GPUTextureFormat = compute ? "rgba8unorm" : "r8unorm";
+        // The AO images' format, or the prefilter's (its storage binding's: r32float).
+        const format: GPUTextureFormat = info.bindings.find((b) => b.role === "output" && b.format)?.format ?? (compute ? "rgba8unorm" : "r8unorm");
         return {
-            info, layout, size,
+            info, layout, size, dispatch,
             compute: compute ? d.createComputePipeline({ layout: pipelineLayout, compute: { module, entryPoint: info.entryPoint } }) : undefined,
             render: compute ? undefined : d.createRenderPipeline({
                 layout: pipelineLayout,
@@ -214,8 +231,7 @@ export class AoChain {
         };
     }
 
-    private resource(p: PassState, b: BindingInfo, t: TextureViews, previous: GPUTextureView | undefined, output: GPUTextureView,
-                     read: GPUTextureView | undefined, written: GPUTextureView | undefined): GPUBindingResource {
+    private resource(p: PassState, b: BindingInfo, t: TextureViews, v: PassViews): GPUBindingResource {
         if (b.kind === "sampler") return this.sampler;
         const need = (view: GPUTextureView | undefined, what: string): GPUTextureView => {
             if (view) return view;
@@ -226,12 +242,13 @@ export class AoChain {
         case "depth": return t.depth!;
         case "normals": return need(t.normals, "normals");
         case "noise": return this.noise!.createView();
-        case "ao_input": return need(previous, "the previous pass's output");
-        case "output": return output;
+        case "ao_input": return need(v.previous, "the previous pass's output");
+        case "output": return v.output;
+        case "depth_mips": return need(v.atlas, "the prefilter's depth MIP atlas");
         case "gbuffer_albedo": return need(t.albedo, "albedo");
         case "motion": return need(t.motion, "motion");
-        case "history": return need(read, "a history");
-        case "history_output": return need(written, "a history");
+        case "history": return need(v.read, "a history");
+        case "history_output": return need(v.written, "a history");
         }
         throw new AogenError(`AoChain ${p.info.pass}`, `binds '${b.role}', which this module does not provide`, "valid: regenerate the module with this aogen");
     }
