@@ -8,7 +8,7 @@
 # It never fails the build: where a step fails (no Node.js, no npm packages, a tsc error) it
 # writes OUT/FAILED naming the step and what it said, and every test that reads the module fails
 # with that text (ts_support.hpp) while the rest of the suite runs. A test run under a mutant
-# aimed at the module ("ts:aogen.ts") makes its own (ts_support.hpp).
+# aimed at the module ("ts:aogen.ts") plants it in a copy of this text and compiles that.
 file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
 set(variants) # none: the default matrix

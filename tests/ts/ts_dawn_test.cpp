@@ -179,7 +179,7 @@ TEST_CASE("ts: AoChain on Dawn runs every variant of the default matrix bit for 
 {
     vulkan::context* ctx = shared_context();
     if (!ctx) return;
-    const compiled_module matrix(AOGEN_TS_MATRIX_MODULE_DIR, {}); // `aogen generate --targets wgsl,ts` of no names
+    const compiled_module matrix(AOGEN_TS_MATRIX_MODULE_DIR); // `aogen generate --targets wgsl,ts` of no names
     std::vector<std::string> names;
     for (const variant& v : default_matrix()) names.push_back(to_name(v));
     CHECK(check_on_dawn(*ctx, matrix, names) >= names.size());

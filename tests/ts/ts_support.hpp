@@ -20,8 +20,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#ifndef AOGEN_CLI_PATH
-#error "tests/CMakeLists.txt defines AOGEN_CLI_PATH (the aogen command line), AOGEN_TS_TESTS_DIR and AOGEN_TS_MODULE_DIR"
+#ifndef AOGEN_TS_MODULE_DIR
+#error "tests/CMakeLists.txt defines AOGEN_TS_TESTS_DIR (tests/ts) and AOGEN_TS_MODULE_DIR (the build's module)"
 #endif
 
 namespace aogen_test {
@@ -76,8 +76,8 @@ inline bool mutant_in_module()
 }
 
 // A module compiled by tsc --strict -- the build's (tests/ts/build_module.cmake), or under a
-// mutant aimed at it this process's own, generated and the mutant planted -- and a scratch
-// folder for this process's files.
+// mutant aimed at it this process's own: the build's generated text, the mutant planted,
+// compiled here -- and a scratch folder for this process's files.
 struct compiled_module {
     wgsl::detail::scratch dir;
     // The scratch folder removes its files; its folders are removed here -- also when the
@@ -96,18 +96,15 @@ struct compiled_module {
     std::string ts() const { return root + "/ts"; }
     std::string js() const { return ts() + "/dist/aogen.js"; }
 
-    // The build's module in `built`, made for `names` (none: the default matrix).
-    compiled_module(const std::string& built, const std::vector<std::string>& names) : root(mutant_in_module() ? dir.path() : built)
+    // The build's module in `built`.
+    explicit compiled_module(const std::string& built) : root(mutant_in_module() ? dir.path() : built)
     {
-        if (root == built) {
-            if (wgsl::detail::is_file(root + "/FAILED")) fail("ts test", wgsl::detail::read_all(root + "/FAILED"), "valid: scripts/install-deps.sh, then the build");
-            if (!wgsl::detail::is_file(root + "/BUILT")) fail("ts test", "the build made no module in " + root, "valid: the build's ts module targets built");
-            return;
-        }
-        std::vector<std::string> args{AOGEN_CLI_PATH, "generate", "--quiet", "--targets", "wgsl,ts", "--out", dir.path()};
-        args.insert(args.end(), names.begin(), names.end());
-        run(args, dir.file("generate.log"));
-        wgsl::detail::write_all(ts() + "/aogen.ts", aogen_test::emitted_under_test(wgsl::detail::read_all(ts() + "/aogen.ts"), "ts:aogen.ts"));
+        if (wgsl::detail::is_file(built + "/FAILED")) fail("ts test", wgsl::detail::read_all(built + "/FAILED"), "valid: scripts/install-deps.sh, then the build");
+        if (!wgsl::detail::is_file(built + "/BUILT")) fail("ts test", "the build made no module in " + built, "valid: the build's ts module targets built");
+        if (root == built) return;
+        std::filesystem::create_directory(ts());
+        for (const char* f : {"package.json", "tsconfig.json"}) std::filesystem::copy_file(built + "/ts/" + f, ts() + "/" + f);
+        wgsl::detail::write_all(ts() + "/aogen.ts", aogen_test::emitted_under_test(wgsl::detail::read_all(built + "/ts/aogen.ts"), "ts:aogen.ts"));
         // The module's one dependency, @webgpu/types, where a project keeps it: its node_modules.
         std::filesystem::create_directory_symlink(tools.dir + "/node_modules", ts() + "/node_modules");
         run({tools.node, tools.dir + "/node_modules/typescript/bin/tsc", "-p", ts()}, dir.file("tsc.log"));
@@ -128,7 +125,7 @@ struct compiled_module {
 // The module of module_variants.
 inline const compiled_module& the_module()
 {
-    static const compiled_module m(AOGEN_TS_MODULE_DIR, module_variants);
+    static const compiled_module m(AOGEN_TS_MODULE_DIR);
     return m;
 }
 
