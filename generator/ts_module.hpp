@@ -158,15 +158,6 @@ inline std::string block_text(const layout::struct_layout& l)
     return out + "\n    ] }";
 }
 
-// A storage image's WebGPU format, from its GLSL format qualifier.
-inline std::string webgpu_format(const std::string& qualifier)
-{
-    if (qualifier == "rgba8") return "rgba8unorm";
-    if (qualifier == "rgba16f") return "rgba16float";
-    if (qualifier == "r32f") return "r32float";
-    fail("ts module", "a storage image of format " + qualifier, "valid: rgba8, rgba16f or r32f, WebGPU's storage formats here");
-}
-
 // A shader's resources as passes.ts's BindingInfo list (bind group 0).
 inline std::string bindings_text(const std::vector<codegen::resource>& resources)
 {
@@ -175,7 +166,7 @@ inline std::string bindings_text(const std::vector<codegen::resource>& resources
         out += std::string(out.size() > 1 ? ", " : "") + "{ binding: " + std::to_string(r.binding) + ", role: " +
                literal(std::string(names::name_of(resource_role_names, r.role, "role"))) + ", kind: " +
                literal(std::string(names::name_of(codegen::resource_kind_names, r.kind, "kind"))) +
-               (r.kind == codegen::resource_kind::storage_image ? ", format: " + literal(webgpu_format(r.format)) : "") + " }";
+               (r.kind == codegen::resource_kind::storage_image ? ", format: " + literal(codegen::webgpu_format(r.format)) : "") + " }";
     return out + "]";
 }
 

@@ -108,16 +108,37 @@ struct options {
     template_reader templates;        // where the templates are read; empty: the embedded ones
 };
 
+// A storage image format aogen writes: its GLSL format qualifier (options::output_format, a
+// resource's format) and WGSL's texel format of it, which a WebGPU engine's storage texture
+// has ("" for r8: core WebGPU has none). The graphics APIs' enums live with the harnesses that
+// make the images, keyed by the qualifier (vulkan/passes.hpp, gl/chain.hpp).
+struct storage_format {
+    std::string_view qualifier;
+    std::string_view webgpu;
+};
+
 // The output formats options::output_format accepts, in the order error messages list them.
-inline constexpr std::array<std::string_view, 4> output_formats{{"r8", "rgba8", "r32f", "rgba16f"}};
+inline constexpr std::array<storage_format, 4> output_formats{{{"r8", ""}, {"rgba8", "rgba8unorm"}, {"r32f", "r32float"}, {"rgba16f", "rgba16float"}}};
+
+// The WebGPU texel format of storage format `qualifier`; an aogen::error naming the valid ones.
+inline std::string webgpu_format(const std::string& qualifier)
+{
+    std::string valid;
+    for (const storage_format& f : output_formats) {
+        if (f.qualifier == qualifier && !f.webgpu.empty()) return std::string(f.webgpu);
+        if (!f.webgpu.empty()) valid += (valid.empty() ? "" : ", ") + std::string(f.qualifier);
+    }
+    fail("storage format", quote(qualifier) + " has no WebGPU storage texture format", "valid: " + valid);
+}
 
 // aogen::error unless every option is valid.
 inline void validate(const options& o)
 {
     names::require_listed(binding_model_names, o.model, "binding model");
-    const bool known = std::find(output_formats.begin(), output_formats.end(), o.output_format) != output_formats.end();
+    const bool known = std::find_if(output_formats.begin(), output_formats.end(), [&](const storage_format& f) { return f.qualifier == o.output_format; }) !=
+                       output_formats.end();
     std::string valid;
-    for (std::string_view f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f);
+    for (const storage_format& f : output_formats) valid += (valid.empty() ? "" : ", ") + std::string(f.qualifier);
     if (!known) fail("output format", quote(o.output_format) + " is not a storage image format aogen writes", "valid: " + valid);
     // Core WebGPU's storage textures have no one-channel 8-bit format (r8unorm).
     if (o.model == binding_model::webgpu && o.output_format == "r8")

@@ -138,24 +138,24 @@ inline std::string id_of(size_t i, shader_stage stage)
     return std::string(6 - std::min<size_t>(6, id.size()), '0') + id + "." + file_extension(stage);
 }
 
-// Runs `node aogen_wgsl.mjs <command> <dir>`; an aogen::error unless it exits 0.
-inline void run(const tools& t, const std::string& command, const std::string& dir)
+// Runs `args` (args[0] a path) to its end, its stderr -- with `stdout_too` its stdout as well
+// -- written to file `log`: its exit status (-1: ended by a signal). An aogen::error when it
+// cannot start (the log not writable, no process).
+inline int run_process(std::vector<std::string> args, const std::string& log, bool stdout_too)
 {
-    const std::string script = t.dir + "/aogen_wgsl.mjs";
-    std::vector<std::string> args{t.node, script, command, dir};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    const std::string log = dir + "/stderr.log";
     // Opened before the fork: between fork and exec the child calls only dup2 and execv.
     const int log_fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (log_fd < 0) fail("wgsl tools", "cannot write " + log + ": " + std::strerror(errno), "valid: a writable temporary folder ($TMPDIR)");
     const pid_t pid = ::fork();
     if (pid < 0) {
         ::close(log_fd);
-        fail("wgsl tools", std::string("cannot start node: ") + std::strerror(errno), "valid: a system that can run processes");
+        fail("wgsl tools", "cannot start " + args.at(0) + ": " + std::strerror(errno), "valid: a system that can run processes");
     }
     if (pid == 0) {
+        if (stdout_too) ::dup2(log_fd, STDOUT_FILENO);
         ::dup2(log_fd, STDERR_FILENO); // dup2's copy does not inherit O_CLOEXEC
         ::execv(argv[0], argv.data());
         ::_exit(127);
@@ -164,9 +164,18 @@ inline void run(const tools& t, const std::string& command, const std::string& d
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Runs `node aogen_wgsl.mjs <command> <dir>`; an aogen::error unless it exits 0.
+inline void run(const tools& t, const std::string& command, const std::string& dir)
+{
+    const std::string script = t.dir + "/aogen_wgsl.mjs";
+    const std::string log = dir + "/stderr.log";
+    const int status = run_process({t.node, script, command, dir}, log, false);
     const std::string said = read_all(log);
     ::unlink(log.c_str());
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+    if (status == 0) return;
     std::string first = said.substr(0, said.find('\n'));
     fail("wgsl tools", "node " + script + " " + command + " failed" + (first.empty() ? "" : ": " + first),
          "valid: the packages of wgsl/package.json installed (scripts/install-deps.sh)");

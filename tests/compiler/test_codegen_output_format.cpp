@@ -96,7 +96,8 @@ std::string glslang_log(const std::string& text, shader_stage stage, int& versio
 
 TEST_CASE("codegen+glslang: every output format compiles, and the SPIR-V's storage image has it", "[codegen][glslang]")
 {
-    for (const std::string_view format : codegen::output_formats) {
+    for (const codegen::storage_format& f : codegen::output_formats) {
+        const std::string_view format = f.qualifier;
         codegen::options o;
         o.output_format = std::string(format);
         size_t shaders = 0;

@@ -12,9 +12,13 @@
 // the generated module before it is compiled (tests/mutants/).
 #include "ts/ts_support.hpp"
 
+#include <aogen/emitted.hpp>
 #include <aogen/kernel.hpp>
 #include <aogen/random.hpp>
 #include <aogen/spiral.hpp>
+
+#include <cstring>
+#include <set>
 
 using namespace aogen_test;
 
@@ -126,6 +130,29 @@ TEST_CASE("ts: the module of thirteen variants compiles with tsc --strict")
     CHECK(package.at("version") == AOGEN_PROJECT_VERSION); // aogen's own
     CHECK(package.at("type") == "module");
     CHECK(package.at("types") == "./aogen.ts");
+}
+
+TEST_CASE("ts: each storage texture's format in the module is the one its WGSL declares")
+{
+    // The oracle: naga's WGSL, texture_storage_2d<FORMAT, write> (the module's texts); the
+    // module's formats come from codegen::webgpu_format of the plan's qualifiers.
+    size_t storage = 0;
+    for (const std::string& name : module_variants) {
+        INFO(name);
+        std::set<std::string> planned, declared;
+        for (const codegen::shader_plan& s : plan_for(codegen::make_plan(variant_from_name(name)), compile::target::wgsl).shaders())
+            for (const codegen::resource& r : s.resources)
+                if (r.kind == codegen::resource_kind::storage_image) planned.insert(codegen::webgpu_format(r.format)), ++storage;
+        for (const auto& f : std::filesystem::directory_iterator(the_module().root + "/" + name)) {
+            const std::string text = wgsl::detail::read_all(f.path().string());
+            for (size_t at = text.find("texture_storage_2d<"); at != std::string::npos; at = text.find("texture_storage_2d<", at + 1)) {
+                const size_t from = at + std::strlen("texture_storage_2d<");
+                declared.insert(text.substr(from, text.find(',', from) - from));
+            }
+        }
+        CHECK(planned == declared);
+    }
+    CHECK(storage >= 20); // every compute pass's output, the prefilter's r32float atlas, the history's rgba16float
 }
 
 TEST_CASE("ts: chainInputs gives plan::inputs's bytes under WGSL's rules, for a sweep of settings, cameras, frames and sizes")

@@ -13,12 +13,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #ifndef AOGEN_TS_MODULE_DIR
 #error "tests/CMakeLists.txt defines AOGEN_TS_TESTS_DIR (tests/ts) and AOGEN_TS_MODULE_DIR (the build's module)"
@@ -41,22 +37,8 @@ inline const std::vector<std::string> module_variants = [] {
 // Runs `args` (args[0] a path): its exit status (-1: killed) and what it wrote to stdout and stderr.
 inline std::pair<int, std::string> run_status(std::vector<std::string> args, const std::string& log)
 {
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) fail("ts test", "cannot write " + log, "valid: a writable $TMPDIR");
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        ::dup2(fd, STDOUT_FILENO), ::dup2(fd, STDERR_FILENO);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
-    }
-    ::close(fd);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, wgsl::detail::read_all(log)};
+    const int status = wgsl::detail::run_process(std::move(args), log, true);
+    return {status, wgsl::detail::read_all(log)};
 }
 
 // run_status, and an aogen::error unless it exits 0.

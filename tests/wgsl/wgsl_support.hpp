@@ -38,13 +38,13 @@ struct ray_cast_crease {
     }
 };
 
-// `passes` (a WGSL round trip) against `v`'s SPIR-V on G-buffer `g` with settings `s`.
-inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipelines& passes, const variant& v, const vulkan::gbuffer& g,
-                            const vulkan::chain_settings& s)
+// `passes` (a WGSL round trip) against `v`'s SPIR-V chain `spirv` on G-buffer `g` with settings `s`.
+inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipelines& passes, const vulkan::chain& spirv, const variant& v,
+                                   const vulkan::gbuffer& g, const vulkan::chain_settings& s)
 {
     const vulkan::gpu_gbuffer gpu(ctx, g);
     const vulkan::chain_result got = vulkan::bound_chain(ctx, passes, gpu, passes.plan().inputs(s, g.width, g.height)).run_once();
-    const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
+    const vulkan::chain_result expected = spirv.run(g, s);
     REQUIRE(got.width == expected.width);
     REQUIRE(got.height == expected.height);
     // The crease is occluded: the comparison is not between two blank images.
@@ -54,15 +54,22 @@ inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipe
     return difference_of(got.ao, expected.ao);
 }
 
-// `v`'s WGSL `texts` run on Dawn against `v`'s SPIR-V on G-buffer `g` with settings `s`.
-inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, const std::vector<std::string>& texts, const vulkan::gbuffer& g,
+// against_spirv against the variant's own SPIR-V chain, made here.
+inline ao_difference against_spirv(vulkan::context& ctx, const vulkan::pass_pipelines& passes, const variant& v, const vulkan::gbuffer& g,
+                                   const vulkan::chain_settings& s)
+{
+    return against_spirv(ctx, passes, chain_under_test(ctx, v), v, g, s);
+}
+
+// `v`'s WGSL `texts` run on Dawn against its SPIR-V chain `spirv` on G-buffer `g` with settings `s`.
+inline ao_difference dawn_against_spirv(const vulkan::chain& spirv, const variant& v, const std::vector<std::string>& texts, const vulkan::gbuffer& g,
                                         const vulkan::chain_settings& s)
 {
     const codegen::plan p = plan_for(codegen::make_plan(v), compile::target::wgsl);
     const wgsl::dawn_result got = wgsl::run_variant_on_dawn(p, texts, g, p.inputs(s, g.width, g.height));
     std::vector<float> ao(got.ao.size());
     for (size_t i = 0; i < ao.size(); ++i) ao[i] = got.ao[i] / 255.0f;
-    const vulkan::chain_result expected = chain_under_test(ctx, v).run(g, s);
+    const vulkan::chain_result expected = spirv.run(g, s);
     REQUIRE(ao.size() == expected.ao.size());
     CHECK(*std::min_element(expected.ao.begin(), expected.ao.end()) < 0.98f); // not two blank images
     if (v.bent_normals) { // its rgba8 texels' .gba, byte for byte
@@ -70,6 +77,13 @@ inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, 
         CHECK(first_difference(decode_bent_normals(got.texels.data(), ao.size()), expected.bent_normal) == "");
     }
     return difference_of(ao, expected.ao);
+}
+
+// dawn_against_spirv against the variant's own SPIR-V chain, made here.
+inline ao_difference dawn_against_spirv(vulkan::context& ctx, const variant& v, const std::vector<std::string>& texts, const vulkan::gbuffer& g,
+                                        const vulkan::chain_settings& s)
+{
+    return dawn_against_spirv(chain_under_test(ctx, v), v, texts, g, s);
 }
 
 // A block as naga lays it out, read from naga's SPIR-V of a WGSL text.
