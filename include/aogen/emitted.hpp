@@ -52,18 +52,17 @@ inline std::vector<std::string> wgsl_texts(const std::vector<codegen::shader_sou
     return wgsl::from_spirv(jobs);
 }
 
+inline std::vector<std::vector<std::string>> emitted_texts(const std::vector<codegen::plan>& plans, compile::target target);
+
 // The texts of `p`'s shaders as target `t` takes them, in plan order: generate(plan_for(p, t)),
-// each compiled to `t` (WGSL: the whole plan in one batch).
+// each compiled to `t` (WGSL: the whole plan in one batch, below).
+
 inline std::vector<std::string> emitted_texts(const codegen::plan& p, compile::target target)
 {
-    const std::vector<codegen::shader_source> sources = codegen::generate(plan_for(p, target));
+    if (target == compile::target::wgsl) return emitted_texts(std::vector<codegen::plan>{p}, target).front();
     std::vector<std::string> out;
-    if (target == compile::target::wgsl) {
-        std::vector<std::vector<uint32_t>> spirv;
-        for (const codegen::shader_source& s : sources) spirv.push_back(compile::compile(s.glsl, s.stage, s.name, {compile::target::spv}).spirv);
-        return wgsl_texts(sources, spirv);
-    }
-    for (const codegen::shader_source& s : sources) out.push_back(compile::compile(s.glsl, s.stage, s.name, {target}).text.at(target));
+    for (const codegen::shader_source& s : codegen::generate(plan_for(p, target)))
+        out.push_back(compile::compile(s.glsl, s.stage, s.name, {target}).text.at(target));
     return out;
 }
 
